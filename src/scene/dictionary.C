@@ -263,7 +263,7 @@ private:
                 auto sub = std::make_shared<Dictionary>();
                 sub->file_ = file_;
                 sub->name_ = qkey;
-                sub->line_ = open;
+                sub->line_ = e.line;
                 parseEntries(*sub, true, open);
                 e.dict = sub;
             }

@@ -163,7 +163,8 @@ rheology::HerschelBulkleyRemoulding readRheology(const Dictionary& d)
     m.n = (m.eta != 0.0 || d.found("n")) ? d.getScalar("n") : 1.0;
     m.gdotRef = (m.eta != 0.0 || d.found("gdotRef")) ? d.getScalar("gdotRef") : 1.0;
     m.deltaRem = d.getScalar("deltaRem");
-    m.xi95 = (m.deltaRem != 1.0 || d.found("xi95")) ? d.getScalar("xi95") : 1.0;
+    const bool softening = m.deltaRem > 0.0 && m.deltaRem < 1.0;
+    m.xi95 = (softening || d.found("xi95")) ? d.getScalar("xi95") : 1.0;
     const rheology::ParameterProblem p = rheology::checkParameters(m);
     if (!p.empty()) d.fail(p.key, p.message);
     return m;

@@ -1,0 +1,294 @@
+// Unit tests of the shared rheology library: Eq. (1), its regularised apparent
+// viscosity, the BING shape factors for general n and the regimes of Eq. (5).
+#include "HerschelBulkleyRemoulding.H"
+#include "basalResistance.H"
+#include "bingShapeFactors.H"
+#include "checkParameters.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+using namespace slide::rheology;
+
+namespace
+{
+
+HerschelBulkleyRemoulding case10()
+{
+    // Table 1, Case 10: s_uo 0.5 kPa, eta 0.45, n 0.23, gdot_ref 0.06, delta_rem 0.5, xi95 10.
+    HerschelBulkleyRemoulding m;
+    m.s_uo = 500.0;
+    m.eta = 0.45;
+    m.n = 0.23;
+    m.gdotRef = 0.06;
+    m.deltaRem = 0.5;
+    m.xi95 = 10.0;
+    return m;
+}
+
+double centralDifference(const std::function<double(double)>& f, double x, double h)
+{
+    return (f(x + h) - f(x - h))/(2.0*h);
+}
+
+// Simpson's rule on [0, b] with N (even) intervals.
+double simpson(const std::function<double(double)>& f, double b, int N = 20000)
+{
+    const double h = b/N;
+    double s = f(0.0) + f(b);
+    for (int i = 1; i < N; ++i) s += f(i*h)*(i % 2 ? 4.0 : 2.0);
+    return s*h/3.0;
+}
+
+} // namespace
+
+TEST(Eq1Strength, NoRemouldingWhenDeltaRemIsOne)
+{
+    HerschelBulkleyRemoulding m = case10();
+    m.deltaRem = 1.0;
+    for (double xi : {0.0, 1.0, 10.0, 1e3})
+    {
+        EXPECT_DOUBLE_EQ(m.remouldingFactor(xi), 1.0);
+        EXPECT_DOUBLE_EQ(m.strength(0.3, xi), m.strength(0.3, 0.0));
+    }
+}
+
+TEST(Eq1Strength, Xi95GivesNinetyFivePercentOfTheLoss)
+{
+    const HerschelBulkleyRemoulding m = case10();
+    const double lossFraction = (1.0 - m.remouldingFactor(m.xi95))/(1.0 - m.deltaRem);
+    EXPECT_NEAR(lossFraction, 0.95, 1e-3);    // 1 - exp(-3) = 0.9502
+    EXPECT_NEAR(m.remouldingFactor(1e6), m.deltaRem, 1e-12);
+    EXPECT_DOUBLE_EQ(m.remouldingFactor(0.0), 1.0);
+}
+
+TEST(Eq1Strength, RateIndependentWhenEtaIsZero)
+{
+    HerschelBulkleyRemoulding m = case10();
+    m.eta = 0.0;
+    for (double g : {0.0, 1e-6, 0.06, 1.0, 100.0})
+    {
+        EXPECT_DOUBLE_EQ(m.strength(g, 0.0), m.s_uo);
+        EXPECT_DOUBLE_EQ(m.strength(g, 5.0), m.s_uo*m.remouldingFactor(5.0));
+    }
+}
+
+TEST(Eq1Strength, ReferenceRateGivesOnePlusEta)
+{
+    const HerschelBulkleyRemoulding m = case10();
+    EXPECT_NEAR(m.strength(m.gdotRef, 0.0), m.s_uo*(1.0 + m.eta), 1e-9);
+    EXPECT_NEAR(m.strength(-m.gdotRef, 0.0), m.s_uo*(1.0 + m.eta), 1e-9);   // rate sign does not matter
+}
+
+TEST(Eq1Strength, BinghamSpecialCase)
+{
+    const HerschelBulkleyRemoulding m = bingham(42.5, 0.3);
+    for (double g : {0.0, 0.5, 2.0, 40.0})
+    {
+        EXPECT_NEAR(m.strength(g, 0.0), 42.5 + 0.3*g, 1e-12);
+    }
+    EXPECT_NEAR(m.consistency(), 0.3, 1e-15);
+}
+
+TEST(Eq1Strength, MonotoneInRateAndStrain)
+{
+    const HerschelBulkleyRemoulding m = case10();
+    double prev = m.strength(0.0, 0.0);
+    for (double g = 1e-4; g < 1e3; g *= 1.5)
+    {
+        const double s = m.strength(g, 0.0);
+        EXPECT_GT(s, prev);
+        prev = s;
+    }
+    prev = m.strength(0.1, 0.0);
+    for (double xi = 0.1; xi < 200; xi *= 1.5)
+    {
+        const double s = m.strength(0.1, xi);
+        EXPECT_LT(s, prev);
+        EXPECT_GE(s, m.deltaRem*m.strength(0.1, 0.0) - 1e-9);
+        prev = s;
+    }
+}
+
+TEST(Eq1Strength, DerivativesMatchFiniteDifferences)
+{
+    for (double n : {0.15, 0.23, 0.5, 1.0, 1.7})
+    {
+        HerschelBulkleyRemoulding m = case10();
+        m.n = n;
+        for (double g : {0.003, 0.06, 0.5, 7.0})
+        {
+            for (double xi : {0.0, 2.0, 30.0})
+            {
+                const double fdRate = centralDifference([&](double x) { return m.strength(x, xi); }, g, 1e-6*g);
+                EXPECT_NEAR(m.strengthRateDerivative(g, xi), fdRate, 1e-6*std::fabs(fdRate) + 1e-9)
+                    << "n " << n << " gdot " << g << " xi " << xi;
+                const double fdXi = centralDifference([&](double x) { return m.strength(g, x); }, xi + 1.0, 1e-5);
+                EXPECT_NEAR(m.strengthStrainDerivative(g, xi + 1.0), fdXi, 1e-6*std::fabs(fdXi) + 1e-9);
+            }
+        }
+    }
+}
+
+TEST(ApparentViscosity, CapIsOpenFOAMsHerschelBulkley)
+{
+    const HerschelBulkleyRemoulding m = case10();
+    ViscosityRegularisation reg;
+    reg.type = Regularisation::cap;
+    reg.muMax = 1e4;
+    // Yielded: s_u/gdot; unyielded: the cap.
+    EXPECT_NEAR(apparentViscosity(m, 1.0, 0.0, reg), m.strength(1.0, 0.0), 1e-9);
+    EXPECT_DOUBLE_EQ(apparentViscosity(m, 1e-5, 0.0, reg), 1e4);
+    EXPECT_DOUBLE_EQ(apparentViscosity(m, 0.0, 0.0, reg), 1e4);
+    EXPECT_DOUBLE_EQ(apparentViscosityDerivative(m, 1e-5, 0.0, reg), 0.0);
+}
+
+TEST(ApparentViscosity, PapanastasiouLimits)
+{
+    const HerschelBulkleyRemoulding m = case10();
+    ViscosityRegularisation reg;
+    reg.type = Regularisation::papanastasiou;
+    reg.m = 100.0;
+    // gdot -> 0: m s_uo R; large m gdot: s_u/gdot.
+    EXPECT_NEAR(apparentViscosity(m, 0.0, 3.0, reg), 100.0*m.thresholdStrength(3.0), 1e-9);
+    const double g = 5.0;
+    EXPECT_NEAR(apparentViscosity(m, g, 3.0, reg), m.strength(g, 3.0)/g, 1e-12*m.strength(g, 3.0));
+    // Finite everywhere and positive.
+    for (double x = 0.0; x < 10.0; x += 0.01)
+    {
+        const double mu = apparentViscosity(m, x, 0.0, reg);
+        EXPECT_TRUE(std::isfinite(mu));
+        EXPECT_GT(mu, 0.0);
+    }
+}
+
+TEST(ApparentViscosity, DerivativesMatchFiniteDifferences)
+{
+    const HerschelBulkleyRemoulding m = case10();
+    for (Regularisation type : {Regularisation::cap, Regularisation::papanastasiou})
+    {
+        ViscosityRegularisation reg;
+        reg.type = type;
+        reg.muMax = 1e5;
+        reg.m = 50.0;
+        for (double g : {0.02, 0.2, 1.0, 20.0})
+        {
+            const double fd = centralDifference([&](double x) { return apparentViscosity(m, x, 1.0, reg); }, g, 1e-6*g);
+            EXPECT_NEAR(apparentViscosityDerivative(m, g, 1.0, reg), fd, 1e-5*std::fabs(fd) + 1e-6)
+                << "type " << static_cast<int>(type) << " gdot " << g;
+        }
+    }
+}
+
+TEST(BingShapeFactors, BinghamValues)
+{
+    EXPECT_NEAR(shapeFactorA1(1.0), 2.0/3.0, 1e-15);
+    EXPECT_NEAR(shapeFactorA2(1.0), 8.0/15.0, 1e-15);
+    EXPECT_NEAR(basalRateFactor(1.0), 2.0, 1e-15);
+    EXPECT_NEAR(momentumFluxFactor(1.0), 1.4, 1e-15);
+}
+
+TEST(BingShapeFactors, MatchIntegralsOfTheVelocityProfile)
+{
+    const double Up = 2.0, Ds = 0.7, Dp = 1.3, D = Dp + Ds;
+    for (double n : {0.15, 0.23, 0.3, 0.5, 1.0, 1.5})
+    {
+        const double p = (n + 1.0)/n;
+        auto u = [&](double z) { return z < Ds ? Up*(1.0 - std::pow(1.0 - z/Ds, p)) : Up; };
+        const double q = simpson(u, Ds) + Up*Dp;
+        const double q2 = simpson([&](double z) { return u(z)*u(z); }, Ds) + Up*Up*Dp;
+        EXPECT_NEAR(q, Up*(Dp + shapeFactorA1(n)*Ds), 1e-8) << "n " << n;
+        EXPECT_NEAR(q2, Up*Up*(Dp + shapeFactorA2(n)*Ds), 1e-8) << "n " << n;
+        // du/dz at the base
+        const double h = 1e-7;
+        EXPECT_NEAR((u(h) - u(0.0))/h, basalRateFactor(n)*Up/Ds, 1e-4*Up/Ds) << "n " << n;
+        // The closure inverts the definition of U, and Eq. (3)'s flux term with
+        // alpha1 = a1, alpha2 = a2 equals integral u^2 - U^2 D.
+        const double U = q/D;
+        EXPECT_NEAR(shearLayerThickness(D, U, Up, n), Ds, 1e-9);
+        EXPECT_NEAR(depthAveragedVelocity(D, Ds, Up, n), U, 1e-12);
+        const double c = momentumFluxFactor(n);
+        EXPECT_NEAR(D*((1.0 - c)*Up*Up + c*U*Up - U*U), q2 - U*U*D, 1e-8) << "n " << n;
+        const double a1 = shapeFactorA1(n), a2 = shapeFactorA2(n);
+        EXPECT_NEAR(c, (1.0 - a2)/(1.0 - a1), 1e-14);
+        // Eq. (3)'s flux bracket is -(integral u^2 dz - U^2 D) (dam-bing-notes.md).
+        EXPECT_NEAR(U*U*D + (a1 - a2)/(1.0 - a1)*Up*Up*D - (1.0 - a2)/(1.0 - a1)*Up*U*D, -(q2 - U*U*D), 1e-8);
+        EXPECT_NEAR(basalShearRate(Up, Ds, n), basalRateFactor(n)*Up/Ds, 1e-12);
+    }
+}
+
+TEST(BingShapeFactors, ShearLayerThicknessIsClipped)
+{
+    EXPECT_DOUBLE_EQ(shearLayerThickness(1.0, 2.0, 1.0, 1.0), 0.0);   // U > U_p: no shear layer
+    EXPECT_DOUBLE_EQ(shearLayerThickness(1.0, 0.0, 1.0, 1.0), 1.0);   // U << U_p: whole column
+    EXPECT_DOUBLE_EQ(shearLayerThickness(1.0, 0.5, 0.0, 1.0), 0.0);   // at rest
+    EXPECT_DOUBLE_EQ(basalShearRate(1.0, 0.0, 0.5), 0.0);
+}
+
+TEST(Eq5BasalRegimes, FourBranches)
+{
+    // Case 6-9 material: s_uo 5 kPa on a 5 deg slope; 4 sin(theta) s_uo = 1743 Pa.
+    const double suo = 5000.0, sinT = std::sin(5.0*M_PI/180.0);
+    const double shear = 9000.0;   // s_u at the basal rate
+    const BasalResistance r9 = frictionalBasalResistance(450.0, suo, shear, sinT);     // Case 9
+    EXPECT_EQ(r9.regime, BasalRegime::confinedSliding);
+    EXPECT_DOUBLE_EQ(r9.tau_b, 450.0);
+    EXPECT_NEAR(r9.tau_confine, 4.0*sinT*suo, 1e-9);
+    EXPECT_FALSE(r9.shearLayer);
+    const BasalResistance r8 = frictionalBasalResistance(1800.0, suo, shear, sinT);    // Case 8
+    EXPECT_EQ(r8.regime, BasalRegime::plugSliding);
+    EXPECT_DOUBLE_EQ(r8.tau_b, 1800.0);
+    EXPECT_DOUBLE_EQ(r8.tau_confine, 0.0);
+    const BasalResistance r7 = frictionalBasalResistance(6000.0, suo, shear, sinT);    // Case 7
+    EXPECT_EQ(r7.regime, BasalRegime::cappedShear);
+    EXPECT_DOUBLE_EQ(r7.tau_b, 6000.0);
+    EXPECT_TRUE(r7.shearLayer);
+    const BasalResistance rn = frictionalBasalResistance(1e9, suo, shear, sinT);
+    EXPECT_EQ(rn.regime, BasalRegime::noSlip);
+    EXPECT_DOUBLE_EQ(rn.tau_b, shear);
+    // Boundaries belong to the lower branch, as Eq. (5) writes them (<=).
+    EXPECT_EQ(frictionalBasalResistance(suo, suo, shear, sinT).regime, BasalRegime::plugSliding);
+    EXPECT_EQ(frictionalBasalResistance(shear, suo, shear, sinT).regime, BasalRegime::cappedShear);
+}
+
+TEST(CriticalThicknesses, PaperValues)
+{
+    // Case 9: H_stability = 4 s_uo/(rho g) = 3.4 m as printed in the paper.
+    EXPECT_NEAR(faceStabilityThickness(5000.0, 600.0, 9.81), 3.4, 0.005);
+    // Flume: uniform-flow plug 0.0675 m (dam-bing-notes).
+    EXPECT_NEAR(slumpThickness(42.5, 1073.0, 9.81, std::sin(3.43*M_PI/180.0)), 0.0675, 0.0002);
+    EXPECT_NEAR(basalFrictionThickness(450.0, 600.0, 9.81, std::sin(5.0*M_PI/180.0)), 0.877, 0.001);
+    // Finneidfjord: 7.2 m/s with C_F 0.003 gives the paper's 78 Pa.
+    EXPECT_NEAR(hydroplaningResistance(1000.0, 0.003, 7.2), 78.0, 0.5);
+}
+
+TEST(CheckParameters, RejectsBadValuesNamingTheKey)
+{
+    const HerschelBulkleyRemoulding good = case10();
+    EXPECT_TRUE(checkParameters(good).empty());
+    struct Bad { const char* key; std::function<void(HerschelBulkleyRemoulding&)> set; };
+    const std::vector<Bad> bad = {
+        {"s_uo", [](HerschelBulkleyRemoulding& m) { m.s_uo = 0.0; }},
+        {"s_uo", [](HerschelBulkleyRemoulding& m) { m.s_uo = -5.0; }},
+        {"s_uo", [](HerschelBulkleyRemoulding& m) { m.s_uo = NAN; }},
+        {"eta", [](HerschelBulkleyRemoulding& m) { m.eta = -0.1; }},
+        {"n", [](HerschelBulkleyRemoulding& m) { m.n = 0.0; }},
+        {"n", [](HerschelBulkleyRemoulding& m) { m.n = -1.0; }},
+        {"gdotRef", [](HerschelBulkleyRemoulding& m) { m.gdotRef = 0.0; }},
+        {"deltaRem", [](HerschelBulkleyRemoulding& m) { m.deltaRem = 0.0; }},
+        {"deltaRem", [](HerschelBulkleyRemoulding& m) { m.deltaRem = 1.2; }},
+        {"xi95", [](HerschelBulkleyRemoulding& m) { m.xi95 = 0.0; }},
+        {"xi95", [](HerschelBulkleyRemoulding& m) { m.xi95 = INFINITY; }},
+    };
+    for (const Bad& b : bad)
+    {
+        HerschelBulkleyRemoulding m = good;
+        b.set(m);
+        const ParameterProblem p = checkParameters(m);
+        EXPECT_EQ(p.key, b.key);
+        EXPECT_FALSE(p.message.empty());
+    }
+}

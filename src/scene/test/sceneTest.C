@@ -1,0 +1,223 @@
+// Reading a whole scene (constant/sceneProperties + system/controlDict) and
+// the checks that reject a physically meaningless one.
+#include "scene.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using slide::scene::InputError;
+using slide::scene::Scene;
+
+namespace
+{
+
+const char* flumeScene = R"(FoamFile { version 2.0; format ascii; class dictionary; object sceneProperties; }
+title "Krone-Wright Run 15";
+g 9.81;
+slide
+{
+    shape        rectangle;
+    length       1.8;
+    height       0.3;
+    rearPosition 0;
+    rearWall     yes;
+    density      1073;
+}
+rheology
+{
+    model    HerschelBulkleyRemoulding;
+    s_uo     42.5;
+    eta      0.0052;
+    n        1;
+    gdotRef  0.06;
+    deltaRem 1;
+}
+base
+{
+    profile   planar;
+    angle     3.43;
+    interface noSlip;
+}
+ambient
+{
+    phase light;
+}
+)";
+
+const char* control = "startTime 0;\nendTime 4.1;\nwriteInterval 0.1;\nstopAtRest yes;\n";
+
+class SceneFixture : public ::testing::Test
+{
+protected:
+    fs::path dir;
+
+    void SetUp() override
+    {
+        dir = fs::temp_directory_path()/("slideSceneTest_" + std::to_string(::getpid()) + "_"
+              + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir/"constant");
+        fs::create_directories(dir/"system");
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    void write(const std::string& scene, const std::string& ctrl = control)
+    {
+        std::ofstream(dir/"constant/sceneProperties") << scene;
+        std::ofstream(dir/"system/controlDict") << ctrl;
+    }
+
+    // Replace the first occurrence of `from` in the flume scene.
+    static std::string edit(const std::string& from, const std::string& to)
+    {
+        std::string s = flumeScene;
+        const std::size_t k = s.find(from);
+        EXPECT_NE(k, std::string::npos) << from;
+        return s.replace(k, from.size(), to);
+    }
+
+    InputError readError()
+    {
+        try
+        {
+            Scene::read(dir.string());
+        }
+        catch (const InputError& e)
+        {
+            return e;
+        }
+        ADD_FAILURE() << "scene was accepted";
+        return InputError("", 0, "", "");
+    }
+};
+
+} // namespace
+
+TEST_F(SceneFixture, ReadsTheFlume)
+{
+    write(flumeScene);
+    const Scene s = Scene::read(dir.string());
+    EXPECT_EQ(s.title, "Krone-Wright Run 15");
+    EXPECT_DOUBLE_EQ(s.slide.length, 1.8);
+    EXPECT_DOUBLE_EQ(s.slide.height, 0.3);
+    EXPECT_TRUE(s.slide.rearWall);
+    EXPECT_DOUBLE_EQ(s.slide.density, 1073.0);
+    EXPECT_DOUBLE_EQ(s.rheology.s_uo, 42.5);
+    EXPECT_DOUBLE_EQ(s.rheology.eta, 0.0052);
+    EXPECT_DOUBLE_EQ(s.rheology.gdotRef, 0.06);
+    EXPECT_DOUBLE_EQ(s.rheology.deltaRem, 1.0);
+    EXPECT_TRUE(s.base.isPlanar());
+    EXPECT_NEAR(s.base.angle(0.0), 3.43*M_PI/180.0, 1e-12);
+    EXPECT_EQ(s.interface.type, slide::scene::Interface::Type::noSlip);
+    EXPECT_EQ(s.ambient.phase, slide::scene::Ambient::Phase::light);
+    EXPECT_DOUBLE_EQ(s.control.endTime, 4.1);
+    EXPECT_DOUBLE_EQ(s.control.writeInterval, 0.1);
+    EXPECT_TRUE(s.control.stopAtRest);
+    EXPECT_NEAR(s.slide.area(), 0.54, 1e-12);
+}
+
+TEST_F(SceneFixture, FrictionalAndHydroplaningInterfaces)
+{
+    write(edit("interface noSlip;", "interface frictional;\n    s_b 450;"));
+    Scene s = Scene::read(dir.string());
+    EXPECT_EQ(s.interface.type, slide::scene::Interface::Type::frictional);
+    EXPECT_DOUBLE_EQ(s.interface.basalStrength(10.0), 450.0);
+
+    write(edit("interface noSlip;", "interface hydroplaning;\n    C_F 0.003;"));
+    s = Scene::read(dir.string());
+    EXPECT_EQ(s.interface.type, slide::scene::Interface::Type::hydroplaning);
+    EXPECT_NEAR(s.interface.basalStrength(7.2), 77.76, 1e-9);
+}
+
+TEST_F(SceneFixture, PolylineBaseAndThicknessProfile)
+{
+    std::string sc = edit("profile   planar;\n    angle     3.43;", "profile polyline;\n    points ((0 0) (100 -10) (300 -12));");
+    sc = sc.replace(sc.find("shape        rectangle;"), 23, "shape profile;\n    thickness ((10 0) (20 4) (40 4) (50 0));");
+    for (const char* k : {"    length       1.8;\n", "    height       0.3;\n", "    rearPosition 0;\n"})
+    {
+        sc = sc.replace(sc.find(k), std::string(k).size(), "");
+    }
+    write(sc);
+    const Scene s = Scene::read(dir.string());
+    EXPECT_FALSE(s.base.isPlanar());
+    EXPECT_DOUBLE_EQ(s.slide.rearPosition, 10.0);
+    EXPECT_DOUBLE_EQ(s.slide.length, 40.0);
+    EXPECT_DOUBLE_EQ(s.slide.height, 4.0);
+    EXPECT_DOUBLE_EQ(s.slide.area(), 0.5*4*10 + 4*20 + 0.5*4*10);
+    EXPECT_DOUBLE_EQ(s.slide.thickness(15.0), 2.0);
+    EXPECT_DOUBLE_EQ(s.slide.thickness(60.0), 0.0);
+}
+
+TEST_F(SceneFixture, BadValuesNameFileLineAndKey)
+{
+    struct Bad { std::string from, to, key; int line; };
+    const std::vector<Bad> bad = {
+        {"s_uo     42.5;", "s_uo     -42.5;", "rheology.s_uo", 16},
+        {"s_uo     42.5;", "s_uo     0;", "rheology.s_uo", 16},
+        {"deltaRem 1;", "deltaRem 1.5;", "rheology.deltaRem", 20},
+        {"deltaRem 1;", "deltaRem 0;", "rheology.deltaRem", 20},
+        {"n        1;", "n        0;", "rheology.n", 18},
+        {"n        1;", "n        -0.2;", "rheology.n", 18},
+        {"deltaRem 1;", "deltaRem 0.5;", "rheology.xi95", 13},   // xi95 needed with softening
+        {"length       1.8;", "length       -1;", "slide.length", 7},
+        {"density      1073;", "density      abc;", "slide.density", 11},
+        {"angle     3.43;", "angle     95;", "base.angle", 25},
+        {"interface noSlip;", "interface sticky;", "base.interface", 26},
+        {"interface noSlip;", "interface frictional;", "base.s_b", 22},
+        {"interface noSlip;", "interface noSlip; s_b 4;", "base.s_b", 26},
+        {"model    HerschelBulkleyRemoulding;", "model    Bingham;", "rheology.model", 15},
+        {"eta      0.0052;", "etta      0.0052;", "rheology.etta", 17},
+    };
+    for (const Bad& b : bad)
+    {
+        write(edit(b.from, b.to));
+        const InputError e = readError();
+        EXPECT_EQ(e.key(), b.key) << b.to << " -> " << e.what();
+        EXPECT_EQ(e.line(), b.line) << b.to << " -> " << e.what();
+        EXPECT_EQ(fs::path(e.file()).filename(), "sceneProperties") << e.what();
+    }
+}
+
+TEST_F(SceneFixture, PolylineMustBeMonotonicAndHoldTheSlide)
+{
+    write(edit("profile   planar;\n    angle     3.43;", "profile polyline;\n    points ((0 0) (10 -1) (5 -2));"));
+    InputError e = readError();
+    EXPECT_EQ(e.key(), "base.points");
+    EXPECT_NE(e.message().find("increase strictly"), std::string::npos) << e.what();
+
+    write(edit("profile   planar;\n    angle     3.43;", "profile polyline;\n    points ((0 0) (1 -0.1));"));
+    e = readError();
+    EXPECT_EQ(e.key(), "slide.rearPosition");
+    EXPECT_NE(e.message().find("does not lie on the base"), std::string::npos) << e.what();
+}
+
+TEST_F(SceneFixture, SlideBelowTheBaseIsRejected)
+{
+    std::string sc = edit("shape        rectangle;", "shape profile;\n    thickness ((0 0) (1 -0.2) (2 0));");
+    for (const char* k : {"    length       1.8;\n", "    height       0.3;\n", "    rearPosition 0;\n"})
+    {
+        sc = sc.replace(sc.find(k), std::string(k).size(), "");
+    }
+    write(sc);
+    const InputError e = readError();
+    EXPECT_EQ(e.key(), "slide.thickness");
+    EXPECT_NE(e.message().find("below the base"), std::string::npos) << e.what();
+}
+
+TEST_F(SceneFixture, EndTimeBeforeStartTime)
+{
+    write(flumeScene, "startTime 5;\nendTime 4.1;\nwriteInterval 0.1;\n");
+    const InputError e = readError();
+    EXPECT_EQ(e.key(), "endTime");
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_EQ(fs::path(e.file()).filename(), "controlDict");
+}
+
+TEST_F(SceneFixture, MissingSceneFile)
+{
+    const InputError e = readError();
+    EXPECT_NE(e.file().find("constant/sceneProperties"), std::string::npos);
+}
