@@ -29,7 +29,8 @@ std::string methodOutputDir(const std::string& caseDir, const std::string& metho
 
 void prepareOutput(const std::string& caseDir, const std::string& method)
 {
-    const fs::path summary = fs::path(methodOutputDir(caseDir, method))/"summary.json";
+    // Nothing is created here: the case may not exist, and a failed run must not leave folders behind.
+    const fs::path summary = fs::path(caseDir.empty() ? "." : caseDir)/"postProcessing"/method/"summary.json";
     std::error_code ec;
     fs::remove(summary, ec);
 }

@@ -23,10 +23,10 @@ int main(int argc, char** argv)
     return output::runGuarded("slideMPM", [&]()
     {
         args.printBanner();
+        output::prepareOutput(args.caseDir(), "slideMPM");
         const scene::Scene sc = scene::Scene::read(args.caseDir());
         const scene::Dictionary mpmDict = scene::readMethodDict(args.caseDir(), "mpmDict");
         mpmDict.checkKnownKeys({"FoamFile"});
-        output::prepareOutput(args.caseDir(), "slideMPM");
 
         const std::string backend = Kokkos::DefaultExecutionSpace::name();
         std::cout << "Backend: " << backend << " (concurrency " << Kokkos::DefaultExecutionSpace().concurrency()

@@ -19,10 +19,10 @@ int main(int argc, char** argv)
     return output::runGuarded("slideDAM", [&]()
     {
         args.printBanner();
+        output::prepareOutput(args.caseDir(), "slideDAM");
         const scene::Scene sc = scene::Scene::read(args.caseDir());
         const scene::Dictionary damDict = scene::readMethodDict(args.caseDir(), "damDict");
         damDict.checkKnownKeys({"FoamFile"});
-        output::prepareOutput(args.caseDir(), "slideDAM");
 
         std::cout << "Scene: " << sc.title << "\n    slide " << sc.slide.length << " x " << sc.slide.height
                   << " m, rho' " << sc.slide.density << " kg/m3, s_uo " << sc.rheology.s_uo << " Pa\n"
