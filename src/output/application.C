@@ -113,6 +113,19 @@ void ArgList::printBanner() const
         << std::endl;
 }
 
+BlowUp::BlowUp(double time, const std::string& place, const std::string& quantity, const std::string& detail)
+:
+    std::runtime_error([&]
+    {
+        std::ostringstream os;
+        os << "numerical blow-up at time " << std::setprecision(10) << time << " s, " << place << ": " << quantity
+           << (detail.empty() ? "" : " (" + detail + ")")
+           << ".\nThe output written before this time is kept; reduce the time step (system/*Dict) or check the scene.";
+        return os.str();
+    }()),
+    time_(time)
+{}
+
 int runGuarded(const std::string& app, const std::function<int()>& body)
 {
     try

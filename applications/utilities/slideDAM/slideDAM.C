@@ -1,57 +1,156 @@
-// slideDAM: the depth-averaged method of Dong, Wang & Cui (2020), Eqs. (2)-(5),
-// on the BING model (Imran, Harff & Parker 2001).
+// slideDAM: the enhanced depth-averaged method of Dong, Wang & Cui (2020),
+// Eqs. (2)-(5), on the BING model (Imran, Harff & Parker 2001) for a
+// Herschel-Bulkley material of general n with rate effect and remoulding
+// (Eq. 1), along a planar or polyline base.
 //
-// Foundation stage: reads and validates the scene and system/damDict, and
-// writes the output contract for the initial state (a zero-length run). The
-// solver itself is the slideDAM issue.
+//   slideDAM [-case dir] [-setting reference|fast]
+//
+// Reads constant/sceneProperties, system/controlDict and system/damDict;
+// writes postProcessing/slideDAM/{runout.dat, summary.json, profile.pvd}.
 #include "application.H"
+#include "damControls.H"
+#include "damIntegrator.H"
+#include "damOutput.H"
 #include "outputContract.H"
 #include "scene.H"
+#include "slideColumns.H"
 
+#include <cmath>
+#include <iomanip>
 #include <iostream>
+#include <memory>
+#include <sstream>
 
 using namespace slide;
 
 int main(int argc, char** argv)
 {
     output::ArgList args(argc, argv, "slideDAM",
-        "Depth-averaged runout of a submarine slide (enhanced BING, Dong et al. 2020)", {});
+        "Depth-averaged runout of a submarine slide (enhanced BING, Dong et al. 2020)",
+        {{"setting", "name", "reference | fast (overrides system/damDict)"}});
     return output::runGuarded("slideDAM", [&]()
     {
         args.printBanner();
-        output::prepareOutput(args.caseDir(), "slideDAM");
-        const scene::Scene sc = scene::Scene::read(args.caseDir());
-        const scene::Dictionary damDict = scene::readMethodDict(args.caseDir(), "damDict");
-        damDict.checkKnownKeys({"FoamFile"});
+        const std::string caseDir = args.caseDir();
+        output::prepareOutput(caseDir, "slideDAM");
 
-        std::cout << "Scene: " << sc.title << "\n    slide " << sc.slide.length << " x " << sc.slide.height
-                  << " m, rho' " << sc.slide.density << " kg/m3, s_uo " << sc.rheology.s_uo << " Pa\n"
-                  << "    base " << (sc.base.isPlanar() ? "planar" : "polyline") << ", interface "
-                  << sc.interface.typeName() << "\n" << std::endl;
+        const scene::Scene sc = scene::Scene::read(caseDir);
+        const dam::DamControls controls =
+            dam::DamControls::read(scene::readMethodDict(caseDir, "damDict"), args.get("setting"));
+        {
+            // Memory: nine doubles per node and a few per column.
+            const unsigned long long bytes = 16ull*8ull*(controls.columns + 1ull);
+            output::checkMemory(bytes, std::to_string(controls.columns) + " columns", caseDir + "/system/damDict", 0,
+                                "columns");
+        }
 
-        output::Progress progress(sc.control.startTime, sc.control.startTime);
-        output::RunoutLog log(args.caseDir(), "slideDAM");
-        output::RunoutSample s0;
-        s0.time = sc.control.startTime;
-        s0.rear = -sc.slide.length;
-        s0.maxThickness = sc.slide.height;
-        s0.mass = sc.slide.density*sc.slide.area();
-        log.write(s0);
-        progress.report(s0.time, 0, true);
+        std::cout << "Scene: " << sc.title << '\n'
+                  << "    slide  " << sc.slide.length << " m x " << sc.slide.height << " m, rho' " << sc.slide.density
+                  << " kg/m3" << (sc.slide.rearWall ? ", held by a rear wall" : "") << '\n'
+                  << "    Eq. (1): s_uo " << sc.rheology.s_uo << " Pa, eta " << sc.rheology.eta << ", n "
+                  << sc.rheology.n << ", gdotRef " << sc.rheology.gdotRef << " 1/s, deltaRem " << sc.rheology.deltaRem
+                  << ", xi95 " << sc.rheology.xi95 << '\n'
+                  << "    base   " << (sc.base.isPlanar() ? "planar" : "polyline") << ", interface "
+                  << sc.interface.typeName();
+        if (sc.interface.type == scene::Interface::Type::frictional) std::cout << ", s_b " << sc.interface.s_b << " Pa";
+        if (sc.interface.type == scene::Interface::Type::hydroplaning) std::cout << ", C_F " << sc.interface.C_F;
+        std::cout << "\nNumerics: " << controls.describe() << "\n" << std::endl;
 
+        dam::SlideColumns slide = dam::SlideColumns::fromScene(sc, controls.columns);
+        dam::DamIntegrator integrator(sc, controls);
+        const double rho = sc.slide.density;
+        const double initialMass = rho*slide.totalArea();
+
+        output::RunoutLog log(caseDir, "slideDAM");
+        output::PvdSeries* series = nullptr;
+        std::unique_ptr<output::PvdSeries> seriesOwner;
+        if (controls.writeFields)
+        {
+            seriesOwner.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideDAM"), "profile"));
+            seriesOwner->truncateAfter(-1.0);
+            series = seriesOwner.get();
+        }
+        auto write = [&](double t)
+        {
+            log.write(dam::runoutSample(slide, t, rho));
+            if (series) series->add(t, dam::profile(slide, sc));
+        };
+
+        const scene::RunControl& rc = sc.control;
+        double t = rc.startTime;
+        long long step = 0;
+        long long writeIndex = 1;
+        double nextWrite = rc.startTime + rc.writeInterval;
+        output::Progress progress(rc.startTime, rc.endTime, controls.progressInterval);
+        write(t);
+        progress.report(t, step, true, "front = 0 m");
+
+        bool atRest = false;
+        const double eps = 1e-9*std::max(1.0, rc.endTime);
+        while (t < rc.endTime - eps)
+        {
+            double dt = integrator.timeStep(slide);
+            const double target = std::min(nextWrite, rc.endTime);
+            bool landing = false;
+            if (t + dt >= target - eps)
+            {
+                dt = target - t;
+                landing = true;
+            }
+            integrator.step(slide, dt, t);
+            ++step;
+            t = landing ? target : t + dt;
+
+            if (rc.stopAtRest && dam::DamIntegrator::atRest(slide, rc.restVelocity))
+            {
+                atRest = true;
+                write(t);
+                progress.report(t, step, true, "all columns at rest");
+                break;
+            }
+            if (landing && t >= nextWrite - eps)
+            {
+                write(t);
+                ++writeIndex;
+                nextWrite = rc.startTime + writeIndex*rc.writeInterval;
+                std::ostringstream extra;
+                extra << std::setprecision(5) << "front = " << slide.front() << " m  U_front = " << slide.U.back()
+                      << " m/s";
+                progress.report(t, step, true, extra.str());
+            }
+            else if (landing && t >= rc.endTime - eps)
+            {
+                write(t);
+            }
+            else
+            {
+                progress.report(t, step);
+            }
+        }
+        if (!atRest) atRest = dam::DamIntegrator::atRest(slide, rc.restVelocity);
+
+        const double mass = rho*slide.totalArea();
         output::Summary summary;
         summary.method = "slideDAM";
         summary.caseName = sc.caseName;
-        summary.runout = 0.0;
-        summary.endTime = sc.control.startTime;
-        summary.atRest = false;
+        summary.runout = slide.front();
+        summary.endTime = t;
+        summary.atRest = atRest;
         summary.wallTime = progress.elapsed();
-        summary.problemSize = 0;
+        summary.problemSize = slide.nColumns();
         summary.problemSizeUnit = "columns";
         summary.backend = "serial";
-        summary.addString("status", "zero-length run: the DAM solver is not built yet");
-        summary.write(args.caseDir());
-        std::cout << "End\n" << std::endl;
+        summary.addString("setting", controls.setting);
+        summary.addNumber("steps", static_cast<double>(step));
+        summary.addNumber("node_updates_per_second", step*static_cast<double>(slide.nNodes())/summary.wallTime);
+        summary.addNumber("final_length_m", slide.x.back() - slide.x.front());
+        summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
+        summary.addString("mechanism", dam::detectMechanism(slide));
+        summary.write(caseDir);
+
+        std::cout << "\nRunout " << std::setprecision(6) << slide.front() << " m at t = " << t << " s ("
+                  << (atRest ? "at rest" : "still moving") << "), " << step << " steps, wall time "
+                  << std::setprecision(3) << summary.wallTime << " s\nEnd\n" << std::endl;
         return 0;
     });
 }

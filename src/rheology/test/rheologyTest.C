@@ -126,6 +126,9 @@ TEST(Eq1Strength, DerivativesMatchFiniteDifferences)
                 const double fdRate = centralDifference([&](double x) { return m.strength(x, xi); }, g, 1e-6*g);
                 EXPECT_NEAR(m.strengthRateDerivative(g, xi), fdRate, 1e-6*std::fabs(fdRate) + 1e-9)
                     << "n " << n << " gdot " << g << " xi " << xi;
+                double dsdg = 0.0;
+                EXPECT_NEAR(m.strength(g, xi, dsdg), m.strength(g, xi), 1e-12*m.strength(g, xi));
+                EXPECT_NEAR(dsdg, m.strengthRateDerivative(g, xi), 1e-12*std::fabs(dsdg));
                 const double fdXi = centralDifference([&](double x) { return m.strength(g, x); }, xi + 1.0, 1e-5);
                 EXPECT_NEAR(m.strengthStrainDerivative(g, xi + 1.0), fdXi, 1e-6*std::fabs(fdXi) + 1e-9);
             }

@@ -1,0 +1,81 @@
+#include "damControls.H"
+
+#include <sstream>
+
+namespace slide
+{
+namespace dam
+{
+
+DamControls DamControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
+{
+    d.checkKnownKeys({"FoamFile", "setting", "columns", "timeStep", "courant", "frictionalBase",
+                      "minShearLayerFraction", "viscosityQuadratic", "viscosityLinear", "writeFields",
+                      "progressInterval"});
+    DamControls c;
+    c.setting = overrideSetting.empty() ? d.getWordOneOf("setting", {"reference", "fast"}, "reference")
+                                        : overrideSetting;
+    if (c.setting != "reference" && c.setting != "fast")
+    {
+        throw scene::InputError("-setting", 0, "setting", "'" + c.setting + "' is not one of: reference, fast");
+    }
+    if (c.setting == "fast")
+    {
+        // Measured against the reference in validation/dam: see README there.
+        c.columns = 200;
+        c.timeStep = TimeStep::adaptive;
+        c.courant = 0.5;
+    }
+    if (d.found("columns"))
+    {
+        c.columns = d.getLabel("columns");
+        if (c.columns < 4 || c.columns > 50000000)
+        {
+            d.fail("columns", "number of columns must lie in [4, 5e7], got " + std::to_string(c.columns));
+        }
+    }
+    if (d.found("timeStep"))
+    {
+        c.timeStep = d.getWordOneOf("timeStep", {"paper", "adaptive"}) == "paper" ? TimeStep::paper
+                                                                                 : TimeStep::adaptive;
+    }
+    if (d.found("courant")) c.courant = d.getScalarInRange("courant", 0.0, 1.0, false, true, "Courant number");
+    if (d.found("frictionalBase"))
+    {
+        c.frictionalBase = d.getWordOneOf("frictionalBase", {"enhanced", "original"}) == "enhanced"
+            ? FrictionalBase::enhanced : FrictionalBase::original;
+    }
+    if (d.found("minShearLayerFraction"))
+    {
+        c.minShearLayerFraction =
+            d.getScalarInRange("minShearLayerFraction", 0.0, 0.5, false, true, "minimum shear-layer fraction");
+    }
+    if (d.found("viscosityQuadratic"))
+    {
+        c.viscosityQuadratic = d.getScalarInRange("viscosityQuadratic", 0.0, 10.0, true, true, "artificial viscosity");
+    }
+    if (d.found("viscosityLinear"))
+    {
+        c.viscosityLinear = d.getScalarInRange("viscosityLinear", 0.0, 10.0, true, true, "artificial viscosity");
+    }
+    c.writeFields = d.getBool("writeFields", true);
+    if (d.found("progressInterval"))
+    {
+        c.progressInterval = d.getScalarInRange("progressInterval", 0.0, 1e6, true, true, "progress interval [s]");
+    }
+    return c;
+}
+
+std::string DamControls::describe() const
+{
+    std::ostringstream os;
+    os << "setting " << setting << ": " << columns << " columns, time step "
+       << (timeStep == TimeStep::paper ? "paper (0.001 sqrt(b/g))" : "adaptive (Courant " + std::to_string(courant) + ")")
+       << ", frictional base " << (frictionalBase == FrictionalBase::enhanced ? "enhanced (Eq. 5)" : "original (Eq. 4)")
+       << ", min shear layer " << minShearLayerFraction << " D, artificial viscosity (" << viscosityQuadratic
+       << ", " << viscosityLinear << ")";
+    return os.str();
+}
+
+} // namespace dam
+} // namespace slide

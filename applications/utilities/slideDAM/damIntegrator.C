@@ -1,0 +1,312 @@
+#include "damIntegrator.H"
+
+#include "application.H"
+#include "basalResistance.H"
+#include "bingShapeFactors.H"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace slide
+{
+namespace dam
+{
+
+namespace
+{
+
+// Velocity after a step under a yield-type resistance of magnitude r*dt:
+// stops exactly when the resistance can absorb the trial velocity.
+inline double project(const double trial, const double resistance)
+{
+    if (std::fabs(trial) <= resistance) return 0.0;
+    return trial > 0.0 ? trial - resistance : trial + resistance;
+}
+
+std::string at(const SlideColumns& s, int j)
+{
+    std::ostringstream os;
+    os << "node " << j << " of " << s.nNodes() << " at s = " << s.x[j] << " m along the base";
+    return os.str();
+}
+
+} // namespace
+
+
+DamIntegrator::DamIntegrator(const scene::Scene& sc, const DamControls& controls)
+:
+    scene_(sc),
+    controls_(controls),
+    material_(sc.rheology),
+    rho_(sc.slide.density),
+    g_(sc.g),
+    a1_(rheology::shapeFactorA1(sc.rheology.n)),
+    beta_(rheology::basalRateFactor(sc.rheology.n)),
+    c_(rheology::momentumFluxFactor(sc.rheology.n))
+{
+    // D_s = D (1 - U/U_p)/(1 - a1) in [f D, (1 - f) D]  <=>  U/U_p in [rMin, rMax]
+    const double f = controls_.minShearLayerFraction;
+    rMax_ = 1.0 - f*(1.0 - a1_);
+    rMin_ = a1_ + f*(1.0 - a1_);
+    const double b = sc.slide.length/controls_.columns;
+    paperDt_ = 0.001*std::sqrt(b/g_);
+}
+
+double DamIntegrator::timeStep(const SlideColumns& s) const
+{
+    if (controls_.timeStep == DamControls::TimeStep::paper) return paperDt_;
+    double dxMin = HUGE_VAL, speed = 0.0;
+    const int N = s.nColumns();
+    for (int i = 0; i < N; ++i)
+    {
+        const double dx = s.x[i + 1] - s.x[i];
+        dxMin = std::min(dxMin, dx);
+        const double D = s.area[i]/dx;
+        const double u = std::max(std::max(std::fabs(s.U[i]), std::fabs(s.U[i + 1])),
+                                  std::max(std::fabs(s.Up[i]), std::fabs(s.Up[i + 1])));
+        const double c = std::sqrt(g_*D);
+        const double dU = std::fabs(s.U[i + 1] - s.U[i]);
+        speed = std::max(speed, u + c*(1.0 + controls_.viscosityLinear) + 2.0*controls_.viscosityQuadratic*dU);
+    }
+    return controls_.courant*dxMin/speed;
+}
+
+bool DamIntegrator::atRest(const SlideColumns& s, double restVelocity)
+{
+    for (int j = 0; j < s.nNodes(); ++j)
+    {
+        if (std::fabs(s.U[j]) > restVelocity || std::fabs(s.Up[j]) > restVelocity) return false;
+    }
+    return true;
+}
+
+void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
+{
+    const int N = s.nColumns();
+    const int nNodes = N + 1;
+    D_.resize(N);
+    F_.resize(N);
+    Q_.resize(N);
+    sinT_.resize(nNodes);
+    cosT_.resize(nNodes);
+    xNew_.resize(nNodes);
+    UNew_.resize(nNodes);
+    UpNew_.resize(nNodes);
+    xiNew_.resize(nNodes);
+
+    // Columns: thickness and the momentum-flux bracket of Eq. (3),
+    // D [(c - 1) U_p^2 - c U U_p + U^2], at column-mean velocities.
+    for (int i = 0; i < N; ++i)
+    {
+        const double dx = s.x[i + 1] - s.x[i];
+        if (!(dx > 0.0))
+        {
+            throw output::BlowUp(time, "column " + std::to_string(i) + " between " + at(s, i) + " and the next node",
+                                 "column length", "nodes crossed: dx = " + std::to_string(dx) + " m");
+        }
+        D_[i] = s.area[i]/dx;
+        const double Ub = 0.5*(s.U[i] + s.U[i + 1]);
+        const double Upb = 0.5*(s.Up[i] + s.Up[i + 1]);
+        F_[i] = D_[i]*((c_ - 1.0)*Upb*Upb - c_*Ub*Upb + Ub*Ub);
+        // Artificial viscous pressure (von Neumann-Richtmyer) in compressing columns,
+        // so that a bore (wave breaking, the paper's "Riemann problem") spreads over
+        // a few columns instead of crushing one; zero where the slide stretches.
+        const double dU = s.U[i + 1] - s.U[i];
+        Q_[i] = dU < 0.0
+            ? D_[i]*dU*(controls_.viscosityQuadratic*dU - controls_.viscosityLinear*std::sqrt(g_*D_[i]))
+            : 0.0;
+    }
+
+    const bool planar = scene_.base.isPlanar();
+    const double theta0 = scene_.base.angle(0.0);
+    for (int j = 0; j < nNodes; ++j)
+    {
+        const double th = planar ? theta0 : scene_.base.angle(s.x[j]);
+        sinT_[j] = std::sin(th);
+        cosT_[j] = std::cos(th);
+    }
+
+    const scene::Interface& iface = scene_.interface;
+    const bool frictional = iface.type != scene::Interface::Type::noSlip;
+    const bool enhanced = controls_.frictionalBase == DamControls::FrictionalBase::enhanced;
+
+    // Rigid translation of the confined body (Eq. 5, first branch): mass-weighted
+    // over the nodes in that regime.
+    double confinedMass = 0.0, confinedDrive = 0.0, confinedBase = 0.0;
+    auto nodeRegime = [&](int j, double tauY) -> rheology::BasalRegime
+    {
+        if (!frictional) return rheology::BasalRegime::noSlip;
+        const double sb = iface.basalStrength(std::fabs(s.U[j]));
+        const double confine = 4.0*std::fabs(sinT_[j])*tauY;
+        if (enhanced && sb <= confine) return rheology::BasalRegime::confinedSliding;
+        if (sb <= tauY) return rheology::BasalRegime::plugSliding;
+        return rheology::BasalRegime::cappedShear;   // capped at s_b or not: decided with s_u below
+    };
+    for (int j = 0; j < nNodes; ++j)
+    {
+        if (s.rearWall && j == 0) continue;
+        const double tauY = material_.thresholdStrength(s.xi[j]);
+        s.regime[j] = static_cast<int>(nodeRegime(j, tauY));
+        if (s.regime[j] == static_cast<int>(rheology::BasalRegime::confinedSliding))
+        {
+            const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+            const double ell = 0.5*((j > 0 ? s.x[j] - s.x[j - 1] : 0.0) + (j < N ? s.x[j + 1] - s.x[j] : 0.0));
+            confinedMass += m;
+            confinedDrive += m*g_*sinT_[j];
+            confinedBase += ell;
+        }
+    }
+    // The rigid velocity is a state of its own: recomputing it as the mean of the
+    // node velocities would feed the local slump of the faces back into the
+    // translation. A body that becomes confined starts with no rigid velocity.
+    const double Vold = confinedMass > 0.0 ? s.rigidVelocity : 0.0;
+    double Vnew = 0.0;
+    if (confinedMass > 0.0)
+    {
+        const double sb = iface.basalStrength(std::fabs(Vold));
+        Vnew = project(Vold + dt*confinedDrive/confinedMass, dt*sb*confinedBase/(rho_*confinedMass));
+    }
+
+    for (int j = 0; j < nNodes; ++j)
+    {
+        if (s.rearWall && j == 0)
+        {
+            xNew_[j] = s.x[j];
+            UNew_[j] = UpNew_[j] = 0.0;
+            xiNew_[j] = s.xi[j];
+            s.shearLayer[j] = 0.0;
+            s.basalRate[j] = 0.0;
+            continue;
+        }
+        const bool hasL = j > 0, hasR = j < N;
+        const double DL = hasL ? D_[j - 1] : 0.0;
+        const double DR = hasR ? D_[j] : 0.0;
+        const double m = 0.5*((hasL ? s.area[j - 1] : 0.0) + (hasR ? s.area[j] : 0.0));
+        const double ell = 0.5*((hasL ? s.x[j] - s.x[j - 1] : 0.0) + (hasR ? s.x[j + 1] - s.x[j] : 0.0));
+        const double D = m/ell;
+
+        // Driving accelerations of Eqs. (2)-(3), per unit mass of the control volume.
+        const double aGravity = g_*sinT_[j];
+        const double QL = hasL ? Q_[j - 1] : 0.0;
+        const double QR = hasR ? Q_[j] : 0.0;
+        const double aPressure = (g_*cosT_[j]*(DL*DL - DR*DR)/2.0 + QL - QR)/m;
+        const double aFlux = ((hasR ? F_[j] : 0.0) - (hasL ? F_[j - 1] : 0.0))/m;
+
+        const double tauY = material_.thresholdStrength(s.xi[j]);
+        const rheology::BasalRegime regime = static_cast<rheology::BasalRegime>(s.regime[j]);
+        double U = s.U[j], Up = s.Up[j];
+        double xi = s.xi[j];
+        double Ds = 0.0, rateB = 0.0;
+
+        if (regime == rheology::BasalRegime::confinedSliding)
+        {
+            // Local slump under gravity and the virtual confining resistance, on top
+            // of the rigid translation of the confined body.
+            const double confine = 4.0*std::fabs(sinT_[j])*tauY;
+            const double local = project(U - Vold + dt*(aGravity + aPressure), dt*confine/(rho_*D));
+            U = Up = Vnew + local;
+        }
+        else if (regime == rheology::BasalRegime::plugSliding)
+        {
+            // A plug on the base: Eq. (2) with s_uo replaced by s_b, no shear layer.
+            const double sb = iface.basalStrength(std::fabs(U));
+            U = Up = project(U + dt*(aGravity + aPressure), dt*sb/(rho_*D));
+        }
+        else
+        {
+            // Shear layer under a plug: Eqs. (2) and (3), basal stress s_u(beta U_p/D_s, xi)
+            // capped at s_b (Eq. 5, last two branches).
+            const double cap = frictional ? iface.basalStrength(std::fabs(U)) : HUGE_VAL;
+            const int jl = hasL ? j - 1 : j, jr = hasR ? j + 1 : j;
+            const double dUpdx = (s.Up[jr] - s.Up[jl])/(s.x[jr] - s.x[jl]);
+            const double aPlug = aGravity + aPressure - (Up - U)*dUpdx;
+            const double aLayer = aGravity + aPressure + aFlux;
+            if (Up == 0.0)
+            {
+                // At rest: the plug is the whole column, and it yields only when the
+                // driving stress exceeds the strength; a shear layer then starts thin.
+                Up = project(dt*aPlug, dt*tauY/(rho_*D));
+                U = rMax_*Up;
+                Ds = Up != 0.0 ? D*(1.0 - rMax_)/(1.0 - a1_) : 0.0;
+            }
+            else
+            {
+                // Moving: p = |U_p|, u = |U| in the direction of motion; the resistance
+                // terms are linearised in (u, p) (Rosenbrock-Euler), since D_s, and with it
+                // the plug thickness and the basal rate, react fast to both velocities.
+                const double sgn = Up > 0.0 ? 1.0 : -1.0;
+                const double p = std::fabs(Up);
+                const double r = std::min(std::max(sgn*U/p, rMin_), rMax_);
+                const double u = r*p;
+                const double ds = D*(1.0 - r)/(1.0 - a1_);
+                const double Dp = D - ds;
+                const double rate = beta_*p/ds;
+                double dsu = 0.0;
+                const double su = material_.strength(rate, xi, dsu);
+                const bool capped = su >= cap;
+                const double tau = capped ? cap : su;
+                const double Ru = sgn*aLayer - tau/(rho_*D);
+                const double Rp = sgn*aPlug - tauY/(rho_*Dp);
+                // Jacobian of the resistances (derivation in README): with K_p = tau_y/(rho D_p^2),
+                // K_u = s_u'(rate)/(rho D): J_pp = -K_p D r/(p(1-a1)), J_pu = -J_pp/r,
+                // J_uu = -K_u beta/(D_s (1-r)), J_up = J_uu (1 - 2r).
+                const double Kp = tauY/(rho_*Dp*Dp);
+                const double Jpp = -Kp*D*r/(p*(1.0 - a1_));
+                const double Jpu = -Jpp/r;
+                const double Ku = capped ? 0.0 : dsu/(rho_*D);
+                const double Juu = -Ku*beta_/(ds*(1.0 - r));
+                const double Jup = Juu*(1.0 - 2.0*r);
+                const double m11 = 1.0 - dt*Juu, m12 = -dt*Jup;
+                const double m21 = -dt*Jpu, m22 = 1.0 - dt*Jpp;
+                const double det = m11*m22 - m12*m21;
+                const double du = dt*(m22*Ru - m12*Rp)/det;
+                const double dp = dt*(m11*Rp - m21*Ru)/det;
+                const double pNew = p + dp;
+                if (!(pNew > 0.0))
+                {
+                    U = Up = 0.0;
+                }
+                else
+                {
+                    const double uNew = std::min(std::max(u + du, rMin_*pNew), rMax_*pNew);
+                    U = sgn*uNew;
+                    Up = sgn*pNew;
+                    Ds = D*(1.0 - uNew/pNew)/(1.0 - a1_);
+                    const double rateNew = beta_*pNew/Ds;
+                    rateB = rateNew;
+                    // Remoulding: the shear layer's plastic strain accumulates at the basal rate.
+                    xi += rateNew*dt;
+                }
+            }
+        }
+        UNew_[j] = U;
+        UpNew_[j] = Up;
+        xiNew_[j] = xi;
+        xNew_[j] = s.x[j] + U*dt;
+        s.shearLayer[j] = Ds;
+        s.basalRate[j] = rateB;
+        if (!std::isfinite(U) || !std::isfinite(Up) || !std::isfinite(xi))
+        {
+            throw output::BlowUp(time + dt, at(s, j), !std::isfinite(U) ? "depth-averaged velocity U"
+                                 : !std::isfinite(Up) ? "plug velocity U_p" : "plastic shear strain xi",
+                                 "D = " + std::to_string(D) + " m");
+        }
+    }
+    for (int j = 1; j < nNodes; ++j)
+    {
+        if (!(xNew_[j] > xNew_[j - 1]))
+        {
+            throw output::BlowUp(time + dt, at(s, j), "node order",
+                                 "nodes would cross; the time step is too large for the velocity field");
+        }
+    }
+    s.rigidVelocity = Vnew;
+    s.x.swap(xNew_);
+    s.U.swap(UNew_);
+    s.Up.swap(UpNew_);
+    s.xi.swap(xiNew_);
+}
+
+} // namespace dam
+} // namespace slide

@@ -1,0 +1,85 @@
+#include "damOutput.H"
+
+#include <algorithm>
+#include <cmath>
+
+#include "basalResistance.H"
+
+namespace slide
+{
+namespace dam
+{
+
+output::RunoutSample runoutSample(const SlideColumns& s, double time, double rho)
+{
+    output::RunoutSample r;
+    r.time = time;
+    r.front = s.front();
+    r.rear = s.rear();
+    r.frontVelocity = s.U.back();
+    const int N = s.nColumns();
+    for (int j = 0; j <= N; ++j)
+    {
+        r.maxVelocity = std::max(r.maxVelocity, std::max(std::fabs(s.U[j]), std::fabs(s.Up[j])));
+        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        r.kineticEnergy += 0.5*rho*m*s.U[j]*s.U[j];
+    }
+    for (int i = 0; i < N; ++i) r.maxThickness = std::max(r.maxThickness, s.columnThickness(i));
+    r.mass = rho*s.totalArea();
+    return r;
+}
+
+double basalStress(const SlideColumns& s, const scene::Scene& sc, int j)
+{
+    const auto regime = static_cast<rheology::BasalRegime>(s.regime[j]);
+    const double sb = sc.interface.basalStrength(std::fabs(s.U[j]));
+    if (regime == rheology::BasalRegime::confinedSliding || regime == rheology::BasalRegime::plugSliding) return sb;
+    if (s.Up[j] == 0.0) return 0.0;
+    return std::min(sc.rheology.strength(s.basalRate[j], s.xi[j]), sb);
+}
+
+output::PolyData profile(const SlideColumns& s, const scene::Scene& sc)
+{
+    output::PolyData pd;
+    pd.cells = output::PolyData::Cells::polyline;
+    const int n = s.nNodes();
+    std::vector<double> sArc(n), D(n), U(n), Up(n), Ds(n), xi(n), su(n), remoulded(n), regime(n);
+    for (int j = 0; j < n; ++j)
+    {
+        // The ends of a free slide have zero depth; a wall end keeps its column's.
+        const bool freeEnd = (j == n - 1) || (j == 0 && !s.rearWall);
+        const double h = freeEnd ? 0.0 : s.nodeThickness(j);
+        const scene::Point2 b = sc.base.point(s.x[j]);
+        const scene::Point2 nrm = sc.base.normal(s.x[j]);
+        pd.addPoint(b.x + h*nrm.x, 0.0, b.z + h*nrm.z);
+        sArc[j] = s.x[j];
+        D[j] = h;
+        U[j] = s.U[j];
+        Up[j] = s.Up[j];
+        Ds[j] = s.shearLayer[j];
+        xi[j] = s.xi[j];
+        su[j] = basalStress(s, sc, j);
+        remoulded[j] = sc.rheology.remouldingFactor(s.xi[j]);
+        regime[j] = s.regime[j];
+    }
+    pd.addScalar("s", sArc);
+    pd.addScalar("thickness", D);
+    pd.addScalar("U", U);
+    pd.addScalar("plugVelocity", Up);
+    pd.addScalar("shearLayerThickness", Ds);
+    pd.addScalar("xi", xi);
+    pd.addScalar("basalStress", su);
+    pd.addScalar("remouldedRatio", remoulded);
+    pd.addScalar("basalRegime", regime);
+    return pd;
+}
+
+std::string detectMechanism(const SlideColumns& s)
+{
+    const double length = s.x.back() - s.x.front();
+    if (s.front() > s.initialLength && length < 2.0*s.initialLength) return "block sliding";
+    return "viscous elongation";
+}
+
+} // namespace dam
+} // namespace slide

@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""Writes the 13 case directories of Table 1 (Dong, Wang & Cui 2020) from the
+cleaned table (table1.csv): L0 = 40 m, H0 = 5 m, rho' = 600 kg/m3, a
+rectangular slide released at rest on a planar base. Run once; the cases are
+committed. Usage: generateCases.py [path/to/table1.csv]"""
+import csv
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+table = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "../../../shared/reference/table1.csv")
+
+# End times: long enough for the slowest slide to come to rest (Case 4/5 run for
+# kilometres), and the paper's snapshot times where the slide does not stop.
+end_times = {1: 400, 2: 200, 3: 100, 4: 2000, 5: 3000, 6: 100, 7: 100, 8: 100, 9: 20, 10: 300,
+             11: 30, 12: 40, 13: 300}
+
+header = """/*--------------------------------*- C++ -*----------------------------------*\\
+  SlideFoam scene: Table 1, Case {case} of Dong, Wang & Cui (2020).
+  Written by tutorials/table1/generateCases.py from table1.csv.
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       dictionary;
+    object      {obj};
+}}
+
+"""
+
+
+def num(s):
+    return float(s) if s.strip() else None
+
+
+def fmt(x):
+    return ("%.6g" % x)
+
+
+rows = [r for r in csv.reader(line for line in open(table) if not line.startswith("#"))]
+names = rows[0]
+for r in rows[1:]:
+    row = dict(zip(names, r))
+    case = int(row["case"])
+    d = os.path.join(here, "case%02d" % case)
+    os.makedirs(os.path.join(d, "constant"), exist_ok=True)
+    os.makedirs(os.path.join(d, "system"), exist_ok=True)
+    eta = num(row["eta"]) or 0.0
+    n = num(row["n"])
+    gref = num(row["gdot_ref"])
+    drem = num(row["delta_rem"]) or 1.0
+    xi95 = num(row["xi95"])
+    rheo = ["    model    HerschelBulkleyRemoulding;   // Eq. (1)",
+            "    s_uo     %s;%s// [Pa]" % (fmt(1000 * num(row["s_uo_kPa"])), " " * 10),
+            "    eta      %s;" % fmt(eta)]
+    if eta > 0:
+        rheo += ["    n        %s;" % fmt(n), "    gdotRef  %s;              // [1/s]" % fmt(gref)]
+    rheo += ["    deltaRem %s;" % fmt(drem)]
+    if drem < 1:
+        rheo += ["    xi95     %s;" % fmt(xi95)]
+    base = ["    profile   planar;", "    angle     %s;            // [deg]" % fmt(num(row["theta_deg"]))]
+    if row["base"] == "frictional":
+        base += ["    interface frictional;", "    s_b       %s;             // [Pa]" % fmt(1000 * num(row["s_b_kPa"]))]
+    else:
+        base += ["    interface noSlip;"]
+    paper = ", ".join("%s %s m" % (m, row["runout_%s_m" % m]) for m in ("DAM", "MPM", "CFD") if row["runout_%s_m" % m])
+    scene = header.format(case=case, obj="sceneProperties") + """title       "Table 1 Case {case}";
+
+// Paper: {mech}; runout {paper}
+
+g           9.81;
+
+slide
+{{
+    shape        rectangle;
+    length       40;            // L0 [m]
+    height       5;             // H0 [m]
+    rearPosition 0;
+    density      600;           // submerged rho' [kg/m3]
+}}
+
+rheology
+{{
+{rheo}
+}}
+
+base
+{{
+{base}
+}}
+
+ambient
+{{
+    phase     light;            // submerged weight and inertia carried by rho'
+}}
+""".format(case=case, mech=row["mechanism"], paper=paper or "not given", rheo="\n".join(rheo), base="\n".join(base))
+    control = header.format(case=case, obj="controlDict") + """application     slideFoam;
+
+startFrom       startTime;
+startTime       0;
+stopAt          endTime;
+endTime         {end};
+
+writeControl    adjustableRunTime;
+writeInterval   1;
+
+// All material slower than restVelocity counts as at rest.
+stopAtRest      {stop};
+restVelocity    0.01;           // [m/s]
+
+// CFD numerics (slideFoam only)
+deltaT          1e-3;
+adjustTimeStep  yes;
+maxCo           0.5;
+maxAlphaCo      0.5;
+maxDeltaT       0.05;
+writeFormat     ascii;
+writePrecision  8;
+timeFormat      general;
+timePrecision   6;
+runTimeModifiable no;
+""".format(end=end_times[case], stop="no" if case in (9, 11, 12) else "yes")
+    with open(os.path.join(d, "constant", "sceneProperties"), "w") as f:
+        f.write(scene)
+    with open(os.path.join(d, "system", "controlDict"), "w") as f:
+        f.write(control)
+    print("wrote", d)

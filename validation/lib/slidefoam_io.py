@@ -1,0 +1,52 @@
+"""Readers for SlideFoam's output contract: runout.dat, summary.json and the
+VTK XML PolyData (.vtp, appended raw binary) written by slideDAM and slideMPM."""
+import json
+import re
+import struct
+
+import numpy as np
+
+
+def read_runout(path):
+    """runout.dat as a dict of numpy arrays keyed by column name."""
+    names = ["time", "front", "rear", "frontVelocity", "maxVelocity", "maxThickness", "mass", "kineticEnergy"]
+    data = np.loadtxt(path, comments="#", ndmin=2)
+    return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def read_summary(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def read_vtp(path):
+    """Points (n x 3) and point arrays {name: array} of a SlideFoam .vtp file."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    start = raw.index(b"<AppendedData")
+    start = raw.index(b"_", start) + 1
+    header = raw[:start].decode("ascii", "replace")
+    arrays = {}
+    points = None
+    for m in re.finditer(r'<DataArray type="(\w+)"(?: Name="([^"]*)")?(?: NumberOfComponents="(\d+)")?'
+                         r' format="appended" offset="(\d+)"', header):
+        typ, name, nc, off = m.group(1), m.group(2), int(m.group(3) or 1), int(m.group(4))
+        nbytes = struct.unpack("<Q", raw[start + off:start + off + 8])[0]
+        dtype = {"Float64": "<f8", "Float32": "<f4", "Int64": "<i8", "Int32": "<i4"}[typ]
+        a = np.frombuffer(raw[start + off + 8:start + off + 8 + nbytes], dtype=dtype)
+        if nc > 1:
+            a = a.reshape(-1, nc)
+        if name == "Points":
+            points = a
+        elif name not in ("connectivity", "offsets"):
+            arrays[name] = a
+    return points, arrays
+
+
+def read_pvd(path):
+    """[(time, vtp path)] of a .pvd collection."""
+    import os
+    base = os.path.dirname(path)
+    with open(path) as f:
+        text = f.read()
+    return [(float(t), os.path.join(base, p)) for t, p in re.findall(r'timestep="([^"]+)".*?file="([^"]+)"', text)]
