@@ -9,7 +9,7 @@ namespace dam
 
 DamControls DamControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
-    d.checkKnownKeys({"FoamFile", "setting", "columns", "timeStep", "courant", "frictionalBase",
+    d.checkKnownKeys({"FoamFile", "setting", "columns", "timeStep", "courant", "frictionalBase", "faceStability",
                       "minShearLayerFraction", "viscosityQuadratic", "viscosityLinear", "writeFields",
                       "progressInterval"});
     DamControls c;
@@ -45,6 +45,11 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
         c.frictionalBase = d.getWordOneOf("frictionalBase", {"enhanced", "original"}) == "enhanced"
             ? FrictionalBase::enhanced : FrictionalBase::original;
     }
+    if (d.found("faceStability"))
+    {
+        c.faceStability = d.getWordOneOf("faceStability", {"rankine", "none"}) == "rankine"
+            ? FaceStability::rankine : FaceStability::none;
+    }
     if (d.found("minShearLayerFraction"))
     {
         c.minShearLayerFraction =
@@ -72,7 +77,7 @@ std::string DamControls::describe() const
     os << "setting " << setting << ": " << columns << " columns, time step "
        << (timeStep == TimeStep::paper ? "paper (0.001 sqrt(b/g))" : "adaptive (Courant " + std::to_string(courant) + ")")
        << ", frictional base " << (frictionalBase == FrictionalBase::enhanced ? "enhanced (Eq. 5)" : "original (Eq. 4)")
-       << ", min shear layer " << minShearLayerFraction << " D, artificial viscosity (" << viscosityQuadratic
+       << ", face " << (faceStability == FaceStability::rankine ? "Rankine" : "hydrostatic") << ", min shear layer " << minShearLayerFraction << " D, artificial viscosity (" << viscosityQuadratic
        << ", " << viscosityLinear << ")";
     return os.str();
 }

@@ -190,7 +190,18 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         const double aGravity = g_*sinT_[j];
         const double QL = hasL ? Q_[j - 1] : 0.0;
         const double QR = hasR ? Q_[j] : 0.0;
-        const double aPressure = (g_*cosT_[j]*(DL*DL - DR*DR)/2.0 + QL - QR)/m;
+        // Hydrostatic thrust between columns. At a free face the thrust is the
+        // undrained active (Rankine) one, rho g D^2/2 - 2 s_u D, which vanishes for
+        // D <= H_stability = 4 s_u/(rho g): a face lower than that stands.
+        const double tauYFace = material_.thresholdStrength(s.xi[j]);
+        auto faceThrust = [&](double Dface)
+        {
+            if (controls_.faceStability == DamControls::FaceStability::none) return 0.5*g_*cosT_[j]*Dface*Dface;
+            return std::max(0.5*g_*cosT_[j]*Dface*Dface - 2.0*tauYFace*Dface/rho_, 0.0);
+        };
+        const double PL = hasL ? (hasR ? 0.5*g_*cosT_[j]*DL*DL : faceThrust(DL)) : 0.0;
+        const double PR = hasR ? (hasL || s.rearWall ? 0.5*g_*cosT_[j]*DR*DR : faceThrust(DR)) : 0.0;
+        const double aPressure = (PL - PR + QL - QR)/m;
         const double aFlux = ((hasR ? F_[j] : 0.0) - (hasL ? F_[j - 1] : 0.0))/m;
 
         const double tauY = material_.thresholdStrength(s.xi[j]);
@@ -263,7 +274,10 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
                 const double du = dt*(m22*Ru - m12*Rp)/det;
                 const double dp = dt*(m11*Rp - m21*Ru)/det;
                 const double pNew = p + dp;
-                if (!(pNew > 0.0))
+                // Arrest as at rest: when the column's static strength exceeds its driving
+                // stress, a velocity that this margin removes within the step is removed.
+                const double staticMargin = tauY/(rho_*D) - std::fabs(aPlug);
+                if (!(pNew > 0.0) || (staticMargin > 0.0 && pNew <= dt*staticMargin))
                 {
                     U = Up = 0.0;
                 }
@@ -283,7 +297,8 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         UNew_[j] = U;
         UpNew_[j] = Up;
         xiNew_[j] = xi;
-        xNew_[j] = s.x[j] + U*dt;
+        // Trapezoidal in time: exact for a constant acceleration.
+        xNew_[j] = s.x[j] + 0.5*(s.U[j] + U)*dt;
         s.shearLayer[j] = Ds;
         s.basalRate[j] = rateB;
         if (!std::isfinite(U) || !std::isfinite(Up) || !std::isfinite(xi))

@@ -74,6 +74,18 @@ output::PolyData profile(const SlideColumns& s, const scene::Scene& sc)
     return pd;
 }
 
+double gravityWork(const SlideColumns& s, const scene::Scene& sc)
+{
+    const int N = s.nColumns();
+    double w = 0.0;
+    for (int j = 0; j <= N; ++j)
+    {
+        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        w += m*(sc.base.point(s.x0[j]).z - sc.base.point(s.x[j]).z);
+    }
+    return sc.slide.density*sc.g*w;
+}
+
 std::string detectMechanism(const SlideColumns& s)
 {
     const double length = s.x.back() - s.x.front();

@@ -44,6 +44,7 @@ SlideColumns SlideColumns::fromScene(const scene::Scene& sc, int columns)
                                      "trim the zero-thickness ends of the thickness table");
         }
     }
+    s.x0 = s.x;
     s.U.assign(N + 1, 0.0);
     s.Up.assign(N + 1, 0.0);
     s.xi.assign(N + 1, 0.0);

@@ -72,7 +72,17 @@ int main(int argc, char** argv)
         }
         auto write = [&](double t)
         {
-            log.write(dam::runoutSample(slide, t, rho));
+            const output::RunoutSample sample = dam::runoutSample(slide, t, rho);
+            // Energy bound: depth-averaged kinetic energy beyond the work of gravity
+            // (plus the initial potential energy of the column heights) is a blow-up.
+            const double bound = dam::gravityWork(slide, sc) + rho*sc.g*slide.totalArea()*sc.slide.height;
+            if (!(sample.kineticEnergy <= bound))
+            {
+                throw output::BlowUp(t, "the whole slide (front at s = " + std::to_string(slide.x.back()) + " m)",
+                                     "kinetic energy", std::to_string(sample.kineticEnergy) + " J/m exceeds the "
+                                     + std::to_string(bound) + " J/m that gravity can have supplied");
+            }
+            log.write(sample);
             if (series) series->add(t, dam::profile(slide, sc));
         };
 
@@ -90,6 +100,11 @@ int main(int argc, char** argv)
         while (t < rc.endTime - eps)
         {
             double dt = integrator.timeStep(slide);
+            if (!(dt > 1e-9*rc.writeInterval))
+            {
+                throw output::BlowUp(t, "the slide", "time step",
+                                     [&] { std::ostringstream os; os << "the stable time step collapsed to " << dt << " s"; return os.str(); }());
+            }
             const double target = std::min(nextWrite, rc.endTime);
             bool landing = false;
             if (t + dt >= target - eps)
