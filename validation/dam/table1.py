@@ -51,7 +51,7 @@ def main():
         shutil.copytree(src, d, ignore=shutil.ignore_patterns("postProcessing", "log.*"))
         with open(os.path.join(d, "system", "damDict"), "w") as f:
             if c == 9.5:
-                f.write("frictionalBase original;\n")
+                f.write("frictionalBase original;\nfaceStability none;\n")
             f.write("setting %s;\n" % args.setting)
             if args.setting == "fast":
                 f.write("columns %d;\n" % args.columns)

@@ -86,10 +86,26 @@ double gravityWork(const SlideColumns& s, const scene::Scene& sc)
     return sc.slide.density*sc.g*w;
 }
 
-std::string detectMechanism(const SlideColumns& s)
+std::string detectMechanism(const SlideColumns& s, double g)
 {
-    const double length = s.x.back() - s.x.front();
-    if (s.front() > s.initialLength && length < 2.0*s.initialLength) return "block sliding";
+    // Block sliding is coherent motion: most of the mass moves within 10 % of the
+    // mass-averaged velocity, and that velocity is not a creep.
+    const int N = s.nColumns();
+    double M = 0.0, P = 0.0;
+    for (int j = 0; j <= N; ++j)
+    {
+        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        M += m;
+        P += m*s.U[j];
+    }
+    const double V = P/M;
+    double coherent = 0.0;
+    for (int j = 0; j <= N; ++j)
+    {
+        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        if (std::fabs(s.U[j] - V) <= 0.1*std::fabs(V)) coherent += m;
+    }
+    if (std::fabs(V) > 0.1*std::sqrt(g*s.initialHeight) && coherent > 0.8*M) return "block sliding";
     return "viscous elongation";
 }
 

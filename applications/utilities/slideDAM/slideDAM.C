@@ -160,7 +160,7 @@ int main(int argc, char** argv)
         summary.addNumber("node_updates_per_second", step*static_cast<double>(slide.nNodes())/summary.wallTime);
         summary.addNumber("final_length_m", slide.x.back() - slide.x.front());
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
-        summary.addString("mechanism", dam::detectMechanism(slide));
+        summary.addString("mechanism", dam::detectMechanism(slide, sc.g));
         summary.write(caseDir);
 
         std::cout << "\nRunout " << std::setprecision(6) << slide.front() << " m at t = " << t << " s ("
