@@ -150,8 +150,8 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         s.regime[j] = static_cast<int>(nodeRegime(j, tauY));
         if (s.regime[j] == static_cast<int>(rheology::BasalRegime::confinedSliding))
         {
-            const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
-            const double ell = 0.5*((j > 0 ? s.x[j] - s.x[j - 1] : 0.0) + (j < N ? s.x[j + 1] - s.x[j] : 0.0));
+            const double m = s.nodeArea(j);
+            const double ell = s.nodeBaseLength(j);
             confinedMass += m;
             confinedDrive += m*g_*sinT_[j];
             confinedBase += ell;
@@ -182,8 +182,8 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         const bool hasL = j > 0, hasR = j < N;
         const double DL = hasL ? D_[j - 1] : 0.0;
         const double DR = hasR ? D_[j] : 0.0;
-        const double m = 0.5*((hasL ? s.area[j - 1] : 0.0) + (hasR ? s.area[j] : 0.0));
-        const double ell = 0.5*((hasL ? s.x[j] - s.x[j - 1] : 0.0) + (hasR ? s.x[j + 1] - s.x[j] : 0.0));
+        const double m = s.nodeArea(j);
+        const double ell = s.nodeBaseLength(j);
         const double D = m/ell;
 
         // Driving accelerations of Eqs. (2)-(3), per unit mass of the control volume.

@@ -21,7 +21,7 @@ output::RunoutSample runoutSample(const SlideColumns& s, double time, double rho
     for (int j = 0; j <= N; ++j)
     {
         r.maxVelocity = std::max(r.maxVelocity, std::max(std::fabs(s.U[j]), std::fabs(s.Up[j])));
-        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        const double m = s.nodeArea(j);
         r.kineticEnergy += 0.5*rho*m*s.U[j]*s.U[j];
     }
     for (int i = 0; i < N; ++i) r.maxThickness = std::max(r.maxThickness, s.columnThickness(i));
@@ -80,7 +80,7 @@ double gravityWork(const SlideColumns& s, const scene::Scene& sc)
     double w = 0.0;
     for (int j = 0; j <= N; ++j)
     {
-        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        const double m = s.nodeArea(j);
         w += m*(sc.base.point(s.x0[j]).z - sc.base.point(s.x[j]).z);
     }
     return sc.slide.density*sc.g*w;
@@ -94,7 +94,7 @@ std::string detectMechanism(const SlideColumns& s, double g)
     double M = 0.0, P = 0.0;
     for (int j = 0; j <= N; ++j)
     {
-        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        const double m = s.nodeArea(j);
         M += m;
         P += m*s.U[j];
     }
@@ -102,7 +102,7 @@ std::string detectMechanism(const SlideColumns& s, double g)
     double coherent = 0.0;
     for (int j = 0; j <= N; ++j)
     {
-        const double m = 0.5*((j > 0 ? s.area[j - 1] : 0.0) + (j < N ? s.area[j] : 0.0));
+        const double m = s.nodeArea(j);
         if (std::fabs(s.U[j] - V) <= 0.1*std::fabs(V)) coherent += m;
     }
     if (std::fabs(V) > 0.1*std::sqrt(g*s.initialHeight) && coherent > 0.8*M) return "block sliding";

@@ -9,11 +9,7 @@ namespace dam
 
 double SlideColumns::nodeThickness(int j) const
 {
-    const int N = nColumns();
-    double a = 0.0, l = 0.0;
-    if (j > 0) { a += area[j - 1]; l += x[j] - x[j - 1]; }
-    if (j < N) { a += area[j]; l += x[j + 1] - x[j]; }
-    return a/l;
+    return nodeArea(j)/nodeBaseLength(j);
 }
 
 double SlideColumns::totalArea() const
