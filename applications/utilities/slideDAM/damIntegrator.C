@@ -49,6 +49,8 @@ DamIntegrator::DamIntegrator(const scene::Scene& sc, const DamControls& controls
     const double f = controls_.minShearLayerFraction;
     rMax_ = 1.0 - f*(1.0 - a1_);
     rMin_ = a1_ + f*(1.0 - a1_);
+    invOneMinusA1_ = 1.0/(1.0 - a1_);
+    invRho_ = 1.0/rho_;
     const double b = sc.slide.length/controls_.columns;
     paperDt_ = 0.001*std::sqrt(b/g_);
 }
@@ -185,6 +187,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         const double m = s.nodeArea(j);
         const double ell = s.nodeBaseLength(j);
         const double D = m/ell;
+        const double invD = ell/m;
 
         // Driving accelerations of Eqs. (2)-(3), per unit mass of the control volume.
         const double aGravity = g_*sinT_[j];
@@ -248,35 +251,37 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
                 // the plug thickness and the basal rate, react fast to both velocities.
                 const double sgn = Up > 0.0 ? 1.0 : -1.0;
                 const double p = std::fabs(Up);
-                const double r = std::min(std::max(sgn*U/p, rMin_), rMax_);
+                const double invP = 1.0/p;
+                const double r = std::min(std::max(sgn*U*invP, rMin_), rMax_);
                 const double u = r*p;
-                const double ds = D*(1.0 - r)/(1.0 - a1_);
-                const double Dp = D - ds;
-                const double rate = beta_*p/ds;
+                const double ds = D*(1.0 - r)*invOneMinusA1_;
+                const double invDs = 1.0/ds;
+                const double invDp = 1.0/(D - ds);
+                const double rate = beta_*p*invDs;
                 double dsu = 0.0;
                 const double su = material_.strength(rate, xi, dsu);
                 const bool capped = su >= cap;
                 const double tau = capped ? cap : su;
-                const double Ru = sgn*aLayer - tau/(rho_*D);
-                const double Rp = sgn*aPlug - tauY/(rho_*Dp);
+                const double Ru = sgn*aLayer - tau*invRho_*invD;
+                const double Rp = sgn*aPlug - tauY*invRho_*invDp;
                 // Jacobian of the resistances (derivation in README): with K_p = tau_y/(rho D_p^2),
                 // K_u = s_u'(rate)/(rho D): J_pp = -K_p D r/(p(1-a1)), J_pu = -J_pp/r,
-                // J_uu = -K_u beta/(D_s (1-r)), J_up = J_uu (1 - 2r).
-                const double Kp = tauY/(rho_*Dp*Dp);
-                const double Jpp = -Kp*D*r/(p*(1.0 - a1_));
-                const double Jpu = -Jpp/r;
-                const double Ku = capped ? 0.0 : dsu/(rho_*D);
-                const double Juu = -Ku*beta_/(ds*(1.0 - r));
+                // J_uu = -K_u beta/(D_s (1-r)), J_up = J_uu (1 - 2r); 1/(1 - r) = D/(D_s (1 - a1)).
+                const double Kp = tauY*invRho_*invDp*invDp;
+                const double Jpu = Kp*D*invP*invOneMinusA1_;
+                const double Jpp = -Jpu*r;
+                const double Ku = capped ? 0.0 : dsu*invRho_*invD;
+                const double Juu = -Ku*beta_*invDs*D*invDs*invOneMinusA1_;
                 const double Jup = Juu*(1.0 - 2.0*r);
                 const double m11 = 1.0 - dt*Juu, m12 = -dt*Jup;
                 const double m21 = -dt*Jpu, m22 = 1.0 - dt*Jpp;
-                const double det = m11*m22 - m12*m21;
-                const double du = dt*(m22*Ru - m12*Rp)/det;
-                const double dp = dt*(m11*Rp - m21*Ru)/det;
+                const double dtOverDet = dt/(m11*m22 - m12*m21);
+                const double du = (m22*Ru - m12*Rp)*dtOverDet;
+                const double dp = (m11*Rp - m21*Ru)*dtOverDet;
                 const double pNew = p + dp;
                 // Arrest as at rest: when the column's static strength exceeds its driving
                 // stress, a velocity that this margin removes within the step is removed.
-                const double staticMargin = tauY/(rho_*D) - std::fabs(aPlug);
+                const double staticMargin = tauY*invRho_*invD - std::fabs(aPlug);
                 if (!(pNew > 0.0) || (staticMargin > 0.0 && pNew <= dt*staticMargin))
                 {
                     U = Up = 0.0;
@@ -286,7 +291,8 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
                     const double uNew = std::min(std::max(u + du, rMin_*pNew), rMax_*pNew);
                     U = sgn*uNew;
                     Up = sgn*pNew;
-                    Ds = D*(1.0 - uNew/pNew)/(1.0 - a1_);
+                    const double invPNew = 1.0/pNew;
+                    Ds = D*(1.0 - uNew*invPNew)*invOneMinusA1_;
                     const double rateNew = beta_*pNew/Ds;
                     rateB = rateNew;
                     // Remoulding: the shear layer's plastic strain accumulates at the basal rate.
