@@ -75,7 +75,8 @@ std::string DamControls::describe() const
 {
     std::ostringstream os;
     os << "setting " << setting << ": " << columns << " columns, time step "
-       << (timeStep == TimeStep::paper ? "paper (0.001 sqrt(b/g))" : "adaptive (Courant " + std::to_string(courant) + ")")
+       << (timeStep == TimeStep::paper ? "paper (0.001 sqrt(b/g))" : "adaptive (Courant ")
+       << (timeStep == TimeStep::paper ? "" : std::to_string(courant).substr(0, 4) + ")")
        << ", frictional base " << (frictionalBase == FrictionalBase::enhanced ? "enhanced (Eq. 5)" : "original (Eq. 4)")
        << ", face " << (faceStability == FaceStability::rankine ? "Rankine" : "hydrostatic") << ", min shear layer " << minShearLayerFraction << " D, artificial viscosity (" << viscosityQuadratic
        << ", " << viscosityLinear << ")";
