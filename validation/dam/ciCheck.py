@@ -42,10 +42,18 @@ def check(name, value, target, rel):
     print("%-58s %10.3f  target %8.3f +- %4.1f %%  %s" % (name, value, target, 100 * rel, "ok" if ok else "MISS"))
 
 
+s, r = run("table1/case02")
+check("Case 2 runout at rest [m] (paper DAM 62 m)", s["runout_m"], 62.0, 0.05)
 s, r = run("table1/case10")
 check("Case 10 runout at 300 s [m] (paper DAM 125 m)", s["runout_m"], 125.0, 0.05)
 s, r = run("table1/case09")
-check("Case 9 front velocity at 20 s [m/s] (paper ~12 m/s)", r["frontVelocity"][-1], 12.0, 0.10)
+# The paper's "up to 12 m/s at 20 s" and "~3 m" are read off its Fig. 8(b)/9: +-15 %.
+check("Case 9 front velocity at 20 s [m/s] (paper ~12 m/s)", r["frontVelocity"][-1], 12.0, 0.15)
+check("Case 9 thickness at 20 s [m] (paper ~3 m, H_stability 3.4 m)", r["maxThickness"][-1], 3.0, 0.15)
+accelerating = r["frontVelocity"][-1] > r["frontVelocity"][-6] + 1.0
+checks.append(accelerating)
+print("%-58s %10s  %s" % ("Case 9 still accelerating (gain over the last 5 s > 1 m/s)", accelerating,
+                          "ok" if accelerating else "MISS"))
 ok = s["mechanism"] == "block sliding"
 checks.append(ok)
 print("%-58s %10s  target %s  %s" % ("Case 9 mechanism", s["mechanism"], "block sliding", "ok" if ok else "MISS"))

@@ -66,7 +66,6 @@ def main():
         results.append((c, s["runout_m"], s["end_time_s"], s["at_rest"], s["mechanism"], r["maxThickness"][-1],
                         r["frontVelocity"][-1], s["wall_time_s"]))
         print("case %s: %s" % (c, results[-1][1:]), flush=True)
-    shutil.rmtree(work, ignore_errors=True)
 
     label = "%s, %d columns" % (args.setting, args.columns) if args.setting == "fast" else "reference"
     with open(os.path.join(here, "table1.md"), "w") as f:
@@ -85,6 +84,27 @@ def main():
             f.write("| %s | %s | %s | %.1f | %s | %.0f | %s | %.2f | %.2f | %s | %.2f |\n"
                     % (c, mech, dam if dam else "-", r[1], err, r[2], "yes" if r[3] else "no", r[5], r[6], r[4],
                        r[7]))
+
+    # Sensitivity of the strong, face-collapse cases to the face closure (damDict faceStability).
+    with open(os.path.join(here, "faces.md"), "w") as f:
+        f.write("Face closure sensitivity (`validation/dam/table1.py`, %s): runout [m]\n\n" % label)
+        f.write("| case | paper DAM | paper MPM | gate (default) | rankine | none (BING) |\n|---|---|---|---|---|---|\n")
+        mpm = {6: 7.9, 7: 8.7, 8: 35.0}
+        for c in (6, 7, 8):
+            vals = []
+            for closure in ("gate", "rankine", "none"):
+                d = os.path.join(work, "faces%d_%s" % (c, closure))
+                shutil.copytree(os.path.join(top, "tutorials", "table1", "case%02d" % c), d,
+                                ignore=shutil.ignore_patterns("postProcessing", "log.*"))
+                with open(os.path.join(d, "system", "damDict"), "w") as g:
+                    g.write("setting %s;\nfaceStability %s;\nwriteFields no;\n" % (args.setting, closure))
+                    if args.setting == "fast":
+                        g.write("columns %d;\n" % args.columns)
+                subprocess.run([which("slideDAM"), "-case", d], check=True, stdout=subprocess.DEVNULL,
+                               env=slidefoam_env())
+                vals.append(read_summary(os.path.join(d, "postProcessing", "slideDAM", "summary.json"))["runout_m"])
+            f.write("| %d | %s | %s | %.1f | %.1f | %.1f |\n" % ((c, paper[c][1], mpm[c]) + tuple(vals)))
+    shutil.rmtree(work, ignore_errors=True)
 
     import matplotlib
     matplotlib.use("Agg")

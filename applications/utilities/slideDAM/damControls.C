@@ -47,8 +47,9 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
     }
     if (d.found("faceStability"))
     {
-        c.faceStability = d.getWordOneOf("faceStability", {"rankine", "none"}) == "rankine"
-            ? FaceStability::rankine : FaceStability::none;
+        const std::string f = d.getWordOneOf("faceStability", {"rankine", "gate", "none"});
+        c.faceStability = f == "rankine" ? FaceStability::rankine : f == "gate" ? FaceStability::gate
+                                                                               : FaceStability::none;
     }
     if (d.found("minShearLayerFraction"))
     {
@@ -78,7 +79,8 @@ std::string DamControls::describe() const
        << (timeStep == TimeStep::paper ? "paper (0.001 sqrt(b/g))" : "adaptive (Courant ")
        << (timeStep == TimeStep::paper ? "" : std::to_string(courant).substr(0, 4) + ")")
        << ", frictional base " << (frictionalBase == FrictionalBase::enhanced ? "enhanced (Eq. 5)" : "original (Eq. 4)")
-       << ", face " << (faceStability == FaceStability::rankine ? "Rankine" : "hydrostatic") << ", min shear layer " << minShearLayerFraction << " D, artificial viscosity (" << viscosityQuadratic
+       << ", face " << (faceStability == FaceStability::rankine ? "Rankine"
+                              : faceStability == FaceStability::gate ? "hydrostatic above H_stability" : "hydrostatic") << ", min shear layer " << minShearLayerFraction << " D, artificial viscosity (" << viscosityQuadratic
        << ", " << viscosityLinear << ")";
     return os.str();
 }

@@ -193,14 +193,21 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         const double aGravity = g_*sinT_[j];
         const double QL = hasL ? Q_[j - 1] : 0.0;
         const double QR = hasR ? Q_[j] : 0.0;
-        // Hydrostatic thrust between columns. At a free face the thrust is the
-        // undrained active (Rankine) one, rho g D^2/2 - 2 s_u D, which vanishes for
-        // D <= H_stability = 4 s_u/(rho g): a face lower than that stands.
+        // Hydrostatic thrust between columns. At a free face (faceStability): gate, a
+        // face lower than H_stability = 4 s_u/(rho g) stands and a higher one thrusts
+        // hydrostatically as in BING; rankine, the undrained active thrust
+        // rho g D^2/2 - 2 s_u D, which vanishes at the same height; none, BING's.
         const double tauYFace = material_.thresholdStrength(s.xi[j]);
         auto faceThrust = [&](double Dface)
         {
-            if (controls_.faceStability == DamControls::FaceStability::none) return 0.5*g_*cosT_[j]*Dface*Dface;
-            return std::max(0.5*g_*cosT_[j]*Dface*Dface - 2.0*tauYFace*Dface/rho_, 0.0);
+            const double hydrostatic = 0.5*g_*cosT_[j]*Dface*Dface;
+            switch (controls_.faceStability)
+            {
+                case DamControls::FaceStability::none: return hydrostatic;
+                case DamControls::FaceStability::gate:
+                    return Dface > 4.0*tauYFace/(rho_*g_) ? hydrostatic : 0.0;
+                default: return std::max(hydrostatic - 2.0*tauYFace*Dface/rho_, 0.0);
+            }
         };
         const double PL = hasL ? (hasR ? 0.5*g_*cosT_[j]*DL*DL : faceThrust(DL)) : 0.0;
         const double PR = hasR ? (hasL || s.rearWall ? 0.5*g_*cosT_[j]*DR*DR : faceThrust(DR)) : 0.0;
