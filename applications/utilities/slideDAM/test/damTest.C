@@ -200,7 +200,7 @@ TEST(SlideDAM, KroneWrightFlumeAgainstLubricationTheory)
     const double lubFront = ref.front(0.005);
     std::printf("Krone-Wright Run 15 at 4.1 s: DAM front %.3f m, lubrication front %.3f m from the wall\n",
                 damFront, lubFront);
-    // Measured: DAM 5.78 m (400 columns; 5.79 m with 1600), lubrication 5.55 m (250 cells;
+    // Measured: DAM 5.77 m (400 columns and 1600), lubrication 5.55 m (250 cells;
     // 5.50 m with 1000): converged values 5 % apart, the DAM ahead (it keeps the inertia
     // the long-wave model drops). The test allows 10 %.
     EXPECT_NEAR(damFront, lubFront, 0.10*lubFront);
