@@ -140,7 +140,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
     {
         if (!frictional) return rheology::BasalRegime::noSlip;
         const double sb = iface.basalStrength(std::fabs(s.U[j]));
-        const double confine = 4.0*std::fabs(sinT_[j])*tauY;
+        const double confine = rheology::confiningResistance(tauY, sinT_[j]);
         if (enhanced && sb <= confine) return rheology::BasalRegime::confinedSliding;
         if (sb <= tauY) return rheology::BasalRegime::plugSliding;
         return rheology::BasalRegime::cappedShear;   // capped at s_b or not: decided with s_u below
@@ -205,7 +205,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
             {
                 case DamControls::FaceStability::none: return hydrostatic;
                 case DamControls::FaceStability::gate:
-                    return Dface > 4.0*tauYFace/(rho_*g_) ? hydrostatic : 0.0;
+                    return Dface > rheology::faceStabilityThickness(tauYFace, rho_, g_) ? hydrostatic : 0.0;
                 default: return std::max(hydrostatic - 2.0*tauYFace*Dface/rho_, 0.0);
             }
         };
@@ -224,7 +224,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         {
             // Local slump under gravity and the virtual confining resistance, on top
             // of the rigid translation of the confined body.
-            const double confine = 4.0*std::fabs(sinT_[j])*tauY;
+            const double confine = rheology::confiningResistance(tauY, sinT_[j]);
             const double local = project(U - Vold + dt*(aGravity + aPressure), dt*confine/(rho_*D));
             U = Up = Vnew + local;
         }

@@ -240,6 +240,8 @@ TEST(Eq5BasalRegimes, FourBranches)
     EXPECT_EQ(r9.regime, BasalRegime::confinedSliding);
     EXPECT_DOUBLE_EQ(r9.tau_b, 450.0);
     EXPECT_NEAR(r9.tau_confine, 4.0*sinT*suo, 1e-9);
+    EXPECT_NEAR(confiningResistance(suo, sinT), 1743.1, 0.1);
+    EXPECT_DOUBLE_EQ(confiningResistance(suo, -sinT), confiningResistance(suo, sinT));   // a rising base too
     EXPECT_FALSE(r9.shearLayer);
     const BasalResistance r8 = frictionalBasalResistance(1800.0, suo, shear, sinT);    // Case 8
     EXPECT_EQ(r8.regime, BasalRegime::plugSliding);
