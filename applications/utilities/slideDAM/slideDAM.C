@@ -63,13 +63,11 @@ int main(int argc, char** argv)
         const double initialMass = rho*slide.totalArea();
 
         output::RunoutLog log(caseDir, "slideDAM");
-        output::PvdSeries* series = nullptr;
-        std::unique_ptr<output::PvdSeries> seriesOwner;
+        std::unique_ptr<output::PvdSeries> series;
         if (controls.writeFields)
         {
-            seriesOwner.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideDAM"), "profile"));
-            seriesOwner->truncateAfter(-1.0);
-            series = seriesOwner.get();
+            series.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideDAM"), "profile"));
+            series->truncateAfter(-1.0);   // a fresh run replaces an earlier series
         }
         auto write = [&](double t)
         {
