@@ -96,6 +96,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
     UNew_.resize(nNodes);
     UpNew_.resize(nNodes);
     xiNew_.resize(nNodes);
+    tauY_.resize(nNodes);
 
     // Columns: thickness and the momentum-flux bracket of Eq. (3),
     // D [(c - 1) U_p^2 - c U U_p + U^2], at column-mean velocities.
@@ -148,7 +149,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
     for (int j = 0; j < nNodes; ++j)
     {
         if (s.rearWall && j == 0) continue;
-        const double tauY = material_.thresholdStrength(s.xi[j]);
+        const double tauY = tauY_[j] = material_.thresholdStrength(s.xi[j]);
         s.regime[j] = static_cast<int>(nodeRegime(j, tauY));
         if (s.regime[j] == static_cast<int>(rheology::BasalRegime::confinedSliding))
         {
@@ -197,7 +198,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         // face lower than H_stability = 4 s_u/(rho g) stands and a higher one thrusts
         // hydrostatically as in BING; rankine, the undrained active thrust
         // rho g D^2/2 - 2 s_u D, which vanishes at the same height; none, BING's.
-        const double tauYFace = material_.thresholdStrength(s.xi[j]);
+        const double tauY = tauY_[j];
         auto faceThrust = [&](double Dface)
         {
             const double hydrostatic = 0.5*g_*cosT_[j]*Dface*Dface;
@@ -205,8 +206,8 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
             {
                 case DamControls::FaceStability::none: return hydrostatic;
                 case DamControls::FaceStability::gate:
-                    return Dface > rheology::faceStabilityThickness(tauYFace, rho_, g_) ? hydrostatic : 0.0;
-                default: return std::max(hydrostatic - 2.0*tauYFace*Dface/rho_, 0.0);
+                    return Dface > rheology::faceStabilityThickness(tauY, rho_, g_) ? hydrostatic : 0.0;
+                default: return std::max(hydrostatic - 2.0*tauY*Dface/rho_, 0.0);
             }
         };
         const double PL = hasL ? (hasR ? 0.5*g_*cosT_[j]*DL*DL : faceThrust(DL)) : 0.0;
@@ -214,7 +215,6 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
         const double aPressure = (PL - PR + QL - QR)/m;
         const double aFlux = ((hasR ? F_[j] : 0.0) - (hasL ? F_[j - 1] : 0.0))/m;
 
-        const double tauY = material_.thresholdStrength(s.xi[j]);
         const rheology::BasalRegime regime = static_cast<rheology::BasalRegime>(s.regime[j]);
         double U = s.U[j], Up = s.Up[j];
         double xi = s.xi[j];

@@ -79,6 +79,16 @@ protected:
         return s.replace(k, from.size(), to);
     }
 
+    // A profile-shaped slide takes no length, height or rearPosition.
+    static std::string withoutRectangleKeys(std::string sc)
+    {
+        for (const char* k : {"    length       1.8;\n", "    height       0.3;\n", "    rearPosition 0;\n"})
+        {
+            sc = sc.replace(sc.find(k), std::string(k).size(), "");
+        }
+        return sc;
+    }
+
     InputError readError()
     {
         try
@@ -136,10 +146,7 @@ TEST_F(SceneFixture, PolylineBaseAndThicknessProfile)
 {
     std::string sc = edit("profile   planar;\n    angle     3.43;", "profile polyline;\n    points ((0 0) (100 -10) (300 -12));");
     sc = sc.replace(sc.find("shape        rectangle;"), 23, "shape profile;\n    thickness ((10 0) (20 4) (40 4) (50 0));");
-    for (const char* k : {"    length       1.8;\n", "    height       0.3;\n", "    rearPosition 0;\n"})
-    {
-        sc = sc.replace(sc.find(k), std::string(k).size(), "");
-    }
+    sc = withoutRectangleKeys(sc);
     write(sc);
     const Scene s = Scene::read(dir.string());
     EXPECT_FALSE(s.base.isPlanar());
@@ -197,10 +204,7 @@ TEST_F(SceneFixture, PolylineMustBeMonotonicAndHoldTheSlide)
 TEST_F(SceneFixture, SlideBelowTheBaseIsRejected)
 {
     std::string sc = edit("shape        rectangle;", "shape profile;\n    thickness ((0 0) (1 -0.2) (2 0));");
-    for (const char* k : {"    length       1.8;\n", "    height       0.3;\n", "    rearPosition 0;\n"})
-    {
-        sc = sc.replace(sc.find(k), std::string(k).size(), "");
-    }
+    sc = withoutRectangleKeys(sc);
     write(sc);
     const InputError e = readError();
     EXPECT_EQ(e.key(), "slide.thickness");
