@@ -1,64 +1,268 @@
 // slideMPM: an explicit material point method for submarine slides on Kokkos
-// (OpenMP, CUDA and Serial backends from one source).
+// (OpenMP, CUDA and Serial backends from one source), the non-averaged method
+// of Dong, Wang & Cui (2020): undrained clay with s_u from Eq. (1), E = 100 s_uo,
+// nu = 0.49, cell H0/60 with 4 x 4 particles, Courant 0.3 (Eq. 6), a rigid base
+// with no-slip, frictional or hydroplaning contact.
 //
-// Foundation stage: initialises Kokkos, reads and validates the scene and
-// system/mpmDict, and writes the output contract for the initial state (a
-// zero-length run). The solver itself is the slideMPM issue.
-#include <Kokkos_Core.hpp>
-
-#include "HerschelBulkleyRemoulding.H"
+//   slideMPM [-case dir] [-setting reference|fast]
+//
+// Reads constant/sceneProperties, system/controlDict and system/mpmDict;
+// writes postProcessing/slideMPM/{runout.dat, summary.json, particles.pvd}.
 #include "application.H"
+#include "backgroundGrid.H"
+#include "baseFrame.H"
+#include "materialPoints.H"
+#include "mpmControls.H"
+#include "mpmOutput.H"
 #include "outputContract.H"
 #include "scene.H"
+#include "timeIntegrator.H"
 
+#include <cmath>
+#include <iomanip>
 #include <iostream>
+#include <memory>
+#include <sstream>
 
 using namespace slide;
+
+namespace
+{
+
+mpm::BasalContact contactOf(const scene::Interface& in)
+{
+    mpm::BasalContact c;
+    switch (in.type)
+    {
+        case scene::Interface::Type::noSlip: c.type = mpm::BasalContact::Type::noSlip; break;
+        case scene::Interface::Type::frictional: c.type = mpm::BasalContact::Type::frictional; break;
+        case scene::Interface::Type::hydroplaning: c.type = mpm::BasalContact::Type::hydroplaning; break;
+    }
+    c.s_b = in.s_b;
+    c.rhoWater = in.rhoWater;
+    c.C_F = in.C_F;
+    return c;
+}
+
+std::string backendName()
+{
+    std::ostringstream os;
+    os << mpm::ExecutionSpace::name();
+    if (std::string(mpm::ExecutionSpace::name()) == "OpenMP")
+    {
+        os << " (" << mpm::ExecutionSpace().concurrency() << " threads)";
+    }
+    return os.str();
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
     output::ArgList args(argc, argv, "slideMPM",
-        "Material point method runout of a submarine slide on Kokkos", {});
+        "Material point method runout of a submarine slide on Kokkos (Dong et al. 2020)",
+        {{"setting", "name", "reference | fast (overrides system/mpmDict)"}});
     Kokkos::ScopeGuard kokkos(argc, argv);
     return output::runGuarded("slideMPM", [&]()
     {
         args.printBanner();
-        output::prepareOutput(args.caseDir(), "slideMPM");
-        const scene::Scene sc = scene::Scene::read(args.caseDir());
-        const scene::Dictionary mpmDict = scene::readMethodDict(args.caseDir(), "mpmDict");
-        mpmDict.checkKnownKeys({"FoamFile"});
+        const std::string caseDir = args.caseDir();
+        output::prepareOutput(caseDir, "slideMPM");
+        const scene::Scene sc = scene::Scene::read(caseDir);
+        const mpm::MpmControls controls =
+            mpm::MpmControls::read(scene::readMethodDict(caseDir, "mpmDict"), args.get("setting"));
 
-        const std::string backend = Kokkos::DefaultExecutionSpace::name();
-        std::cout << "Backend: " << backend << " (concurrency " << Kokkos::DefaultExecutionSpace().concurrency()
-                  << ")\n" << std::endl;
+        const double H0 = sc.slide.height;
+        const double d = H0/controls.cellsPerHeight;
+        const int ppc = controls.particlesPerCell;
+        {
+            const long long n = mpm::MaterialPoints::estimateCount(sc, d, ppc);
+            output::checkMemory(n*mpm::MaterialPoints::bytesPerParticle
+                                + mpm::BackgroundGrid::bytesFor(4ll*n/(ppc*ppc) + 1000),
+                                std::to_string(n) + " particles", caseDir + "/system/mpmDict", 0, "cellsPerHeight");
+        }
+        const mpm::BaseFrame frame = mpm::BaseFrame::fromScene(sc);
+        const mpm::UndrainedClay clay = mpm::UndrainedClay::fromYoungs(
+            sc.rheology, controls.youngsModulusRatio*sc.rheology.s_uo, controls.poissonRatio);
+        mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc);
+        mpm::BackgroundGrid grid(d, frame.rearX);
+        const mpm::TimeIntegrator integrator(frame, clay, contactOf(sc.interface), controls, sc.slide.density);
 
-        // One device evaluation of Eq. (1) checks that the shared rheology runs in kernels.
-        const rheology::HerschelBulkleyRemoulding material = sc.rheology;
-        double su = 0.0;
-        Kokkos::parallel_reduce("strengthAtReferenceRate", 1,
-            KOKKOS_LAMBDA(const int, double& s) { s += material.strength(material.gdotRef, 0.0); }, su);
-        std::cout << "s_u(gdotRef, xi = 0) = " << su << " Pa\n" << std::endl;
+        const std::string backend = backendName();
+        std::cout << "Scene: " << sc.title << '\n'
+                  << "    slide  " << sc.slide.length << " m x " << H0 << " m, rho' " << sc.slide.density
+                  << " kg/m3" << (sc.slide.rearWall ? ", held by a rear wall" : "") << '\n'
+                  << "    Eq. (1): s_uo " << sc.rheology.s_uo << " Pa, eta " << sc.rheology.eta << ", n "
+                  << sc.rheology.n << ", gdotRef " << sc.rheology.gdotRef << " 1/s, deltaRem " << sc.rheology.deltaRem;
+        if (sc.rheology.deltaRem < 1.0) std::cout << ", xi95 " << sc.rheology.xi95;
+        std::cout << "\n    base   " << (sc.base.isPlanar() ? "planar" : "polyline") << ", interface "
+                  << sc.interface.typeName();
+        if (sc.interface.type == scene::Interface::Type::frictional) std::cout << ", s_b " << sc.interface.s_b << " Pa";
+        if (sc.interface.type == scene::Interface::Type::hydroplaning) std::cout << ", C_F " << sc.interface.C_F;
+        std::cout << "\nNumerics: " << controls.describe() << "\n"
+                  << "    " << points.count << " particles, cell " << d << " m, elastic wave speed "
+                  << integrator.waveSpeed() << " m/s, dt " << integrator.stableTimeStep(d, 0.0) << " s\n"
+                  << "Backend: " << backend << "\n" << std::endl;
 
-        output::Progress progress(sc.control.startTime, sc.control.startTime);
-        output::RunoutLog log(args.caseDir(), "slideMPM");
-        output::RunoutSample s0;
-        s0.time = sc.control.startTime;
-        s0.rear = -sc.slide.length;
-        s0.maxThickness = sc.slide.height;
-        s0.mass = sc.slide.density*sc.slide.area();
-        log.write(s0);
-        progress.report(s0.time, 0, true);
+        const double rho = sc.slide.density;
+        mpm::HostPoints initial(points);
+        const double initialFront = frame.level.arcLength(initial.frontX());
+        const double initialMass = initial.totalMass();
+        double highest = -1e300;   // elevation of the highest particle at the start
+        for (int p = 0; p < initial.count; ++p)
+        {
+            double X, Z;
+            frame.toGlobal(initial.position(p, 0), initial.position(p, 1), X, Z);
+            highest = std::max(highest, Z);
+        }
 
+        output::RunoutLog log(caseDir, "slideMPM");
+        std::unique_ptr<output::PvdSeries> series;
+        if (controls.writeFields)
+        {
+            series.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideMPM"), "particles"));
+            series->truncateAfter(-1.0);
+        }
+        output::RunoutSample last;
+        auto write = [&](double t)
+        {
+            const mpm::HostPoints hp(points);
+            last = mpm::runoutSample(hp, frame, t, initialFront, d);
+            log.write(last);
+            if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
+            return hp;
+        };
+
+        const scene::RunControl& rc = sc.control;
+        double t = rc.startTime;
+        long long step = 0;
+        long long writeIndex = 1;
+        double nextWrite = rc.startTime + rc.writeInterval;
+        output::Progress progress(rc.startTime, rc.endTime, controls.progressInterval);
+        write(t);
+        progress.report(t, step, true, "front = 0 m");
+        mpm::StepStatistics stats = mpm::TimeIntegrator::statistics(points);
+        const unsigned long long gridBudget = output::availableMemoryBytes() > 0
+            ? output::availableMemoryBytes()/2 : 8ull << 30;
+
+        bool atRest = false;
+        const double eps = 1e-9*std::max(1.0, rc.endTime);
+        std::vector<std::pair<double, std::string>> mechanisms;
+        while (t < rc.endTime - eps)
+        {
+            if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
+            {
+                std::ostringstream os;
+                os << "material spans x in [" << stats.xmin << ", " << stats.xmax << "] m, y in [" << stats.ymin
+                   << ", " << stats.ymax << "] m of the base frame: the background grid would need more memory "
+                   << "than is free";
+                throw output::BlowUp(t, "the particle cloud", "grid extent", os.str());
+            }
+            double dt = integrator.stableTimeStep(d, stats.maxSpeed);
+            const double target = std::min(nextWrite, rc.endTime);
+            bool landing = false;
+            if (t + dt >= target - eps)
+            {
+                dt = target - t;
+                landing = true;
+            }
+            const mpm::StepStatistics next = integrator.step(points, grid, dt);
+            ++step;
+            t = landing ? target : t + dt;
+
+            // Runaway: faster than a fall from the highest start point to the lowest
+            // point reached could make it, with a factor 2 of margin.
+            double Xl, Zl;
+            frame.toGlobal(next.xmax, next.ymin, Xl, Zl);
+            const double drop = std::max(highest - Zl, H0);
+            const double bound = 2.0*std::sqrt(2.0*sc.g*drop) + integrator.waveSpeed();
+            if (!next.finite || next.maxSpeed > bound)
+            {
+                std::ostringstream place, detail;
+                place << "the particles (last good front at s = " << last.front << " m from the initial front)";
+                detail << (next.finite ? "particle speed " + std::to_string(next.maxSpeed)
+                                             + " m/s exceeds the " + std::to_string(bound)
+                                             + " m/s that gravity and the elastic waves can give"
+                                       : std::string("non-finite position or velocity"))
+                       << "; the last good state is the one written at t = " << last.time << " s";
+                throw output::BlowUp(t, place.str(), next.finite ? "velocity" : "NaN", detail.str());
+            }
+            stats = next;
+
+            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity)
+            {
+                atRest = true;
+                write(t);
+                progress.report(t, step, true, "all particles at rest");
+                break;
+            }
+            if (landing && t >= nextWrite - eps)
+            {
+                const mpm::HostPoints hp = write(t);
+                mechanisms.emplace_back(t, mpm::detectMechanism(hp, frame, H0, sc.g, d).name);
+                ++writeIndex;
+                nextWrite = rc.startTime + writeIndex*rc.writeInterval;
+                std::ostringstream extra;
+                extra << std::setprecision(5) << "front = " << last.front << " m  U_front = " << last.frontVelocity
+                      << " m/s  |U|max = " << last.maxVelocity << " m/s";
+                progress.report(t, step, true, extra.str());
+            }
+            else if (landing && t >= rc.endTime - eps)
+            {
+                write(t);
+            }
+            else
+            {
+                progress.report(t, step);
+            }
+        }
+        if (!atRest) atRest = stats.maxSpeed < rc.restVelocity;
+
+        const mpm::HostPoints hp(points);
+        const mpm::Mechanism mech = mpm::detectMechanism(hp, frame, H0, sc.g, d);
+        const double mass = hp.totalMass();
         output::Summary summary;
         summary.method = "slideMPM";
         summary.caseName = sc.caseName;
-        summary.endTime = sc.control.startTime;
+        summary.runout = last.front;
+        summary.endTime = t;
+        summary.atRest = atRest;
         summary.wallTime = progress.elapsed();
+        summary.problemSize = points.count;
         summary.problemSizeUnit = "particles";
         summary.backend = backend;
-        summary.addString("status", "zero-length run: the MPM solver is not built yet");
-        summary.write(args.caseDir());
-        std::cout << "End\n" << std::endl;
+        summary.addString("setting", controls.setting);
+        summary.addNumber("cells_per_height", controls.cellsPerHeight);
+        summary.addNumber("particles_per_cell", controls.particlesPerCell);
+        summary.addNumber("steps", static_cast<double>(step));
+        summary.addNumber("particle_updates_per_second", step*static_cast<double>(points.count)/summary.wallTime);
+        summary.addNumber("final_length_m", last.front - last.rear);
+        summary.addNumber("max_thickness_m", last.maxThickness);
+        summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
+        summary.addString("mechanism", mech.name);
+        summary.addString("shear_band", mech.shearBand);
+        summary.addNumber("bodies", mech.bodies);
+        summary.addNumber("grabens", mech.grabens);
+        summary.addNumber("basal_slip_ratio", mech.basalSlipRatio);
+        {
+            std::ostringstream os;
+            os << '[';
+            for (std::size_t k = 0; k < mechanisms.size(); ++k)
+            {
+                os << (k ? ", " : "") << "[" << output::jsonNumber(mechanisms[k].first) << ", \""
+                   << output::jsonEscape(mechanisms[k].second) << "\"]";
+            }
+            os << ']';
+            summary.extra.emplace_back("mechanism_history", os.str());
+        }
+        summary.write(caseDir);
+
+        std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
+                  << (atRest ? "at rest" : "still moving") << "), mechanism: " << mech.name << "\n"
+                  << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
+                  << summary.wallTime << " s, " << step*static_cast<double>(points.count)/summary.wallTime
+                  << " particle-updates/s on " << backend << "\nEnd\n" << std::endl;
+        (void)rho;
         return 0;
     });
 }

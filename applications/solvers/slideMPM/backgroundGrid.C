@@ -1,0 +1,48 @@
+#include "backgroundGrid.H"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slide
+{
+namespace mpm
+{
+
+unsigned long long BackgroundGrid::bytesFor(const long long nNodes)
+{
+    const unsigned long long threads = static_cast<unsigned long long>(ExecutionSpace().concurrency());
+    return 8ull*static_cast<unsigned long long>(nNodes)*((nComponents + 1)*(threads + 1) + 2);
+}
+
+bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, unsigned long long maxBytes)
+{
+    // Quadratic B-splines reach 1.5 cells; one more keeps particles that move
+    // during the step inside.
+    const int a0 = static_cast<int>(std::floor((xmin - xOrigin)/d)) - 2;
+    const int a1 = static_cast<int>(std::floor((xmax - xOrigin)/d)) + 3;
+    const int b0 = static_cast<int>(std::floor(ymin/d)) - 2;
+    const int b1 = static_cast<int>(std::floor(ymax/d)) + 3;
+    wi0 = a0;
+    wj0 = b0;
+    wni = a1 - a0 + 1;
+    wnj = b1 - b0 + 1;
+    if (ni > 0 && a0 >= i0 && a1 < i0 + ni && b0 >= j0 && b1 < j0 + nj) return true;
+
+    // Grow with a margin of a quarter of the window (at least 8 cells) each way.
+    const int mi = std::max(8, wni/4), mj = std::max(8, wnj/4);
+    const long long newNi = wni + 2ll*mi, newNj = wnj + 2ll*mj;
+    if (bytesFor(newNi*newNj) > maxBytes) return false;
+    i0 = a0 - mi;
+    j0 = b0 - mj;
+    ni = static_cast<int>(newNi);
+    nj = static_cast<int>(newNj);
+    nodal = NodeField("nodal", ni, nj, nComponents);
+    nodalScatter = NodeScatter(nodal);
+    velocity = NodeField("nodeVelocity", ni, nj, 2);
+    dilatation = NodeScalar("nodeDilatation", ni, nj);
+    dilatationScatter = NodeScalarScatter(dilatation);
+    return true;
+}
+
+} // namespace mpm
+} // namespace slide

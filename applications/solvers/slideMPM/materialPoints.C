@@ -1,0 +1,155 @@
+#include "materialPoints.H"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace slide
+{
+namespace mpm
+{
+
+void MaterialPoints::allocate(const int n)
+{
+    count = n;
+    position = ParticleVector("position", n);
+    velocity = ParticleVector("velocity", n);
+    affine = ParticleTensor("affine", n);
+    velocityGradient = ParticleTensor("velocityGradient", n);
+    stress = ParticleTensor("stress", n);
+    mass = ParticleScalar("mass", n);
+    volume = ParticleScalar("volume", n);
+    plasticShearStrain = ParticleScalar("plasticShearStrain", n);
+    strength = ParticleScalar("strength", n);
+    shearStrainRate = ParticleScalar("shearStrainRate", n);
+    plasticShearStrainRate = ParticleScalar("plasticShearStrainRate", n);
+    dilatation = ParticleScalar("dilatation", n);
+}
+
+long long MaterialPoints::estimateCount(const scene::Scene& sc, const double d, const int ppc)
+{
+    const double a = d/ppc;
+    return static_cast<long long>(std::ceil(sc.slide.area()/(a*a)*1.05)) + 16;
+}
+
+namespace
+{
+
+// Arc length of the foot on the base and height above it of a global point
+// (nearest segment of the polyline).
+void baseCoordinates(const scene::BaseProfile& base, double X, double Z, double& s, double& dist)
+{
+    if (base.isPlanar())
+    {
+        const scene::Point2 o = base.point(0.0), t = base.tangent(0.0), n = base.normal(0.0);
+        s = (X - o.x)*t.x + (Z - o.z)*t.z;
+        dist = (X - o.x)*n.x + (Z - o.z)*n.z;
+        return;
+    }
+    double best = std::numeric_limits<double>::max();
+    for (int k = 0; k < base.nSegments(); ++k)
+    {
+        const double s0 = base.segmentStart(k);
+        const double s1 = k + 1 < base.nSegments() ? base.segmentStart(k + 1) : base.length();
+        const scene::Point2 o = base.point(s0), t = base.tangent(0.5*(s0 + s1)), n = base.normal(0.5*(s0 + s1));
+        double u = (X - o.x)*t.x + (Z - o.z)*t.z;
+        const double lo = k == 0 ? -1e300 : 0.0, hi = k + 1 == base.nSegments() ? 1e300 : s1 - s0;
+        u = std::min(std::max(u, lo), hi);
+        const double px = o.x + u*t.x, pz = o.z + u*t.z;
+        const double dd = std::hypot(X - px, Z - pz);
+        if (dd < best)
+        {
+            best = dd;
+            s = s0 + u;
+            dist = (X - o.x)*n.x + (Z - o.z)*n.z;
+        }
+    }
+}
+
+} // namespace
+
+MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& frame, const UndrainedClay& clay,
+                                   const double nu, const double d, const int ppc)
+{
+    const double a = d/ppc;
+    const double s0 = sc.slide.rearPosition, s1 = sc.slide.frontPosition();
+
+    // Frame bounding box of the slide.
+    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+    const int nSample = 200;
+    for (int k = 0; k <= nSample; ++k)
+    {
+        const double s = s0 + (s1 - s0)*k/nSample;
+        const double H = std::max(sc.slide.thickness(s), sc.slide.height);
+        const scene::Point2 p = sc.base.point(s), n = sc.base.normal(s);
+        for (double h : {0.0, H})
+        {
+            double xf, yf;
+            frame.toFrame(p.x + h*n.x, p.z + h*n.z, xf, yf);
+            xmin = std::min(xmin, xf); xmax = std::max(xmax, xf);
+            ymin = std::min(ymin, yf); ymax = std::max(ymax, yf);
+        }
+    }
+    // Sub-cells aligned with the grid (rear at a node line, base at y = 0 when planar).
+    const long long i0 = static_cast<long long>(std::floor((xmin - frame.rearX)/a)) - 1;
+    const long long i1 = static_cast<long long>(std::ceil((xmax - frame.rearX)/a)) + 1;
+    const long long j0 = static_cast<long long>(std::floor(ymin/a)) - 1;
+    const long long j1 = static_cast<long long>(std::ceil(ymax/a)) + 1;
+
+    const double rho = sc.slide.density;
+    const double K0 = nu/(1.0 - nu);
+    std::vector<double> hx, hy, hs;
+    for (long long i = i0; i <= i1; ++i)
+    {
+        for (long long j = j0; j <= j1; ++j)
+        {
+            const double xf = frame.rearX + (i + 0.5)*a, yf = (j + 0.5)*a;
+            double X, Z, s = 0.0, h = 0.0;
+            frame.toGlobal(xf, yf, X, Z);
+            baseCoordinates(sc.base, X, Z, s, h);
+            if (s < s0 || s > s1 || h <= 0.0) continue;
+            const double H = sc.slide.thickness(s);
+            if (h >= H) continue;
+            // Geostatic stress of the column above (normal to the local base).
+            const double sv = -rho*sc.g*std::cos(sc.base.angle(s))*(H - h);
+            hx.push_back(xf);
+            hy.push_back(yf);
+            hs.push_back(sv);
+        }
+    }
+    MaterialPoints mp;
+    mp.spacing = a;
+    mp.allocate(static_cast<int>(hx.size()));
+    auto x = Kokkos::create_mirror_view(mp.position);
+    auto m = Kokkos::create_mirror_view(mp.mass);
+    auto V = Kokkos::create_mirror_view(mp.volume);
+    auto sig = Kokkos::create_mirror_view(mp.stress);
+    auto su = Kokkos::create_mirror_view(mp.strength);
+    for (int p = 0; p < mp.count; ++p)
+    {
+        x(p, 0) = hx[p];
+        x(p, 1) = hy[p];
+        V(p) = a*a;
+        m(p) = rho*a*a;
+        double s[4] = {K0*hs[p], hs[p], K0*hs[p], 0.0};
+        const double tau = UndrainedClay::shearStress(s);
+        const double suo = clay.strength.strength(0.0, 0.0);
+        if (tau > suo)
+        {
+            const double pm = (s[0] + s[1] + s[2])/3.0, r = suo/tau;
+            for (int c = 0; c < 3; ++c) s[c] = pm + r*(s[c] - pm);
+        }
+        for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
+        su(p) = suo;
+    }
+    Kokkos::deep_copy(mp.position, x);
+    Kokkos::deep_copy(mp.mass, m);
+    Kokkos::deep_copy(mp.volume, V);
+    Kokkos::deep_copy(mp.stress, sig);
+    Kokkos::deep_copy(mp.strength, su);
+    return mp;
+}
+
+} // namespace mpm
+} // namespace slide

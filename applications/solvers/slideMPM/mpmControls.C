@@ -1,0 +1,84 @@
+#include "mpmControls.H"
+
+#include <sstream>
+
+namespace slide
+{
+namespace mpm
+{
+
+MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
+{
+    d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "youngsModulusRatio",
+                      "poissonRatio", "volumetricLocking", "transfer", "writeFields", "progressInterval"});
+    MpmControls c;
+    c.setting = overrideSetting.empty() ? d.getWordOneOf("setting", {"reference", "fast"}, "reference")
+                                        : overrideSetting;
+    if (c.setting != "reference" && c.setting != "fast")
+    {
+        throw scene::InputError("-setting", 0, "setting", "'" + c.setting + "' is not one of: reference, fast");
+    }
+    if (c.setting == "fast")
+    {
+        // Measured against finer runs in validation/mpm (README there).
+        c.cellsPerHeight = 20;
+        c.particlesPerCell = 2;
+    }
+    if (d.found("cellsPerHeight"))
+    {
+        c.cellsPerHeight = d.getLabel("cellsPerHeight");
+        if (c.cellsPerHeight < 2 || c.cellsPerHeight > 100000)
+        {
+            d.fail("cellsPerHeight", "cells per slide height must lie in [2, 1e5], got "
+                   + std::to_string(c.cellsPerHeight));
+        }
+    }
+    if (d.found("particlesPerCell"))
+    {
+        c.particlesPerCell = d.getLabel("particlesPerCell");
+        if (c.particlesPerCell < 1 || c.particlesPerCell > 8)
+        {
+            d.fail("particlesPerCell", "particles per cell and direction must lie in [1, 8], got "
+                   + std::to_string(c.particlesPerCell));
+        }
+    }
+    if (d.found("courant")) c.courant = d.getScalarInRange("courant", 0.0, 1.0, false, true, "Courant number");
+    if (d.found("youngsModulusRatio"))
+    {
+        c.youngsModulusRatio =
+            d.getScalarInRange("youngsModulusRatio", 1.0, 1e6, true, true, "Young's modulus / s_uo");
+    }
+    if (d.found("poissonRatio"))
+    {
+        c.poissonRatio = d.getScalarInRange("poissonRatio", 0.0, 0.5, true, false, "Poisson's ratio");
+    }
+    if (d.found("volumetricLocking"))
+    {
+        c.volumetricLocking = d.getWordOneOf("volumetricLocking", {"nodalAveraging", "none"}) == "none"
+            ? VolumetricLocking::none : VolumetricLocking::nodalAveraging;
+    }
+    if (d.found("transfer"))
+    {
+        c.transfer = d.getWordOneOf("transfer", {"apic", "pic"}) == "pic" ? Transfer::pic : Transfer::apic;
+    }
+    c.writeFields = d.getBool("writeFields", true);
+    if (d.found("progressInterval"))
+    {
+        c.progressInterval = d.getScalarInRange("progressInterval", 0.0, 1e6, true, true, "progress interval [s]");
+    }
+    return c;
+}
+
+std::string MpmControls::describe() const
+{
+    std::ostringstream os;
+    os << "setting " << setting << ": cell H0/" << cellsPerHeight << ", " << particlesPerCell << "x"
+       << particlesPerCell << " particles per cell, quadratic B-splines, "
+       << (transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
+       << (volumetricLocking == VolumetricLocking::nodalAveraging ? "nodal averaging" : "not treated")
+       << ", Courant " << courant << " (Eq. 6), E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
+    return os.str();
+}
+
+} // namespace mpm
+} // namespace slide

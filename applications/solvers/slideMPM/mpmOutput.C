@@ -1,0 +1,228 @@
+#include "mpmOutput.H"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace slide
+{
+namespace mpm
+{
+
+HostPoints::HostPoints(const MaterialPoints& mp)
+:
+    count(mp.count),
+    spacing(mp.spacing),
+    position(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.position)),
+    velocity(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.velocity)),
+    stress(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.stress)),
+    mass(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.mass)),
+    volume(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.volume)),
+    xi(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.plasticShearStrain)),
+    strength(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.strength)),
+    shearStrainRate(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.shearStrainRate)),
+    plasticShearStrainRate(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.plasticShearStrainRate))
+{}
+
+double HostPoints::frontX() const
+{
+    double x = -1e300;
+    for (int p = 0; p < count; ++p) x = std::max(x, position(p, 0));
+    return x + 0.5*spacing;
+}
+
+double HostPoints::rearX() const
+{
+    double x = 1e300;
+    for (int p = 0; p < count; ++p) x = std::min(x, position(p, 0));
+    return x - 0.5*spacing;
+}
+
+double HostPoints::totalMass() const
+{
+    double m = 0.0;
+    for (int p = 0; p < count; ++p) m += mass(p);
+    return m;
+}
+
+output::RunoutSample runoutSample(const HostPoints& hp, const BaseFrame& frame, const double t,
+                                  const double initialFront, const double cellSize)
+{
+    output::RunoutSample s;
+    s.time = t;
+    int front = 0;
+    std::map<long long, double> top;   // per grid column: highest particle above the base
+    for (int p = 0; p < hp.count; ++p)
+    {
+        const double x = hp.position(p, 0), y = hp.position(p, 1);
+        const double vx = hp.velocity(p, 0), vy = hp.velocity(p, 1);
+        if (x > hp.position(front, 0)) front = p;
+        const double v2 = vx*vx + vy*vy;
+        s.maxVelocity = std::max(s.maxVelocity, std::sqrt(v2));
+        s.mass += hp.mass(p);
+        s.kineticEnergy += 0.5*hp.mass(p)*v2;
+        const long long c = static_cast<long long>(std::floor(x/cellSize));
+        const double h = y + 0.5*hp.spacing - frame.level.height(x);
+        auto it = top.find(c);
+        if (it == top.end() || h > it->second) top[c] = h;
+    }
+    for (const auto& c : top) s.maxThickness = std::max(s.maxThickness, c.second);
+    s.front = frame.level.arcLength(hp.frontX()) - initialFront;
+    s.rear = frame.level.arcLength(hp.rearX()) - initialFront;
+    if (hp.count > 0) s.frontVelocity = hp.velocity(front, 0);
+    return s;
+}
+
+output::PolyData particleData(const HostPoints& hp, const BaseFrame& frame,
+                              const rheology::HerschelBulkleyRemoulding& material)
+{
+    output::PolyData pd;
+    pd.cells = output::PolyData::Cells::vertices;
+    const int n = hp.count;
+    std::vector<double> vel(3*n), sxx(n), szz(n), sxz(n), syy(n), pressure(n), tau(n), su(n), ratio(n), xi(n),
+        rate(n), plastic(n);
+    const double c = std::cos(frame.angle), s = std::sin(frame.angle);
+    for (int p = 0; p < n; ++p)
+    {
+        double X, Z;
+        frame.toGlobal(hp.position(p, 0), hp.position(p, 1), X, Z);
+        pd.addPoint(X, 0.0, Z);
+        double VX, VZ;
+        frame.vectorToGlobal(hp.velocity(p, 0), hp.velocity(p, 1), VX, VZ);
+        vel[3*p] = VX;
+        vel[3*p + 1] = 0.0;
+        vel[3*p + 2] = VZ;
+        // sigma_global = R sigma R^T, R = [t n] with t = (c, -s), n = (s, c).
+        const double a = hp.stress(p, 0), b = hp.stress(p, 1), o = hp.stress(p, 3);
+        sxx[p] = c*c*a + 2.0*c*s*o + s*s*b;
+        szz[p] = s*s*a - 2.0*c*s*o + c*c*b;
+        sxz[p] = -c*s*a + (c*c - s*s)*o + c*s*b;
+        syy[p] = hp.stress(p, 2);
+        const double sig[4] = {a, b, hp.stress(p, 2), o};
+        pressure[p] = -(a + b + hp.stress(p, 2))/3.0;
+        tau[p] = UndrainedClay::shearStress(sig);
+        su[p] = hp.strength(p);
+        ratio[p] = material.remouldingFactor(hp.xi(p));
+        xi[p] = hp.xi(p);
+        rate[p] = hp.shearStrainRate(p);
+        plastic[p] = hp.plasticShearStrainRate(p);
+    }
+    pd.addVector("velocity", vel);
+    pd.addScalar("sigma_xx", sxx);
+    pd.addScalar("sigma_zz", szz);
+    pd.addScalar("sigma_xz", sxz);
+    pd.addScalar("sigma_yy", syy);
+    pd.addScalar("pressure", pressure);
+    pd.addScalar("shearStress", tau);
+    pd.addScalar("s_u", su);
+    pd.addScalar("remouldedRatio", ratio);
+    pd.addScalar("xi", xi);
+    pd.addScalar("shearStrainRate", rate);
+    pd.addScalar("plasticShearStrainRate", plastic);
+    return pd;
+}
+
+namespace
+{
+
+double median(std::vector<double> v)
+{
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + v.size()/2, v.end());
+    return v[v.size()/2];
+}
+
+} // namespace
+
+Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const double H0, const double g,
+                          const double cellSize)
+{
+    Mechanism m;
+    if (hp.count == 0)
+    {
+        m.name = "none";
+        return m;
+    }
+    // Columns along the base (a cell, or H0/5 if wider, so that a particle
+    // missing from a column's top is not read as a graben): occupancy, top
+    // surface, basal layer.
+    const double width = std::max(cellSize, 0.2*H0);
+    const double x0 = hp.rearX();
+    const int nCol = static_cast<int>(std::ceil((hp.frontX() - x0)/width)) + 1;
+    std::vector<double> top(nCol, -1.0), bottom(nCol, 1e300);
+    for (int p = 0; p < hp.count; ++p)
+    {
+        const int c = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
+        const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
+        top[c] = std::max(top[c], h + 0.5*hp.spacing);
+        bottom[c] = std::min(bottom[c], h - 0.5*hp.spacing);
+    }
+    // Bodies: runs of occupied columns separated by at least two empty ones (2 H0/5).
+    int empty = 0;
+    for (int c = 0; c < nCol; ++c)
+    {
+        if (top[c] < 0.0) { ++empty; continue; }
+        if (empty >= 2) ++m.bodies;
+        empty = 0;
+    }
+    // Grabens: surface depressions deeper than H0/5 below the crests on both sides
+    // (crests = running maxima within 2 H0), found on the column tops.
+    const int reach = std::max(2, static_cast<int>(std::ceil(2.0*H0/width)));
+    int c = 0;
+    while (c < nCol)
+    {
+        if (top[c] < 0.0) { ++c; continue; }
+        double left = 0.0, right = 0.0;
+        for (int k = std::max(0, c - reach); k < c; ++k) left = std::max(left, top[k]);
+        for (int k = c + 1; k <= std::min(nCol - 1, c + reach); ++k) right = std::max(right, top[k]);
+        bool localMin = true;
+        for (int k = std::max(0, c - 1); k <= std::min(nCol - 1, c + 1); ++k)
+        {
+            if (top[k] >= 0.0 && top[k] < top[c]) localMin = false;
+        }
+        if (localMin && std::min(left, right) - top[c] > 0.2*H0)
+        {
+            ++m.grabens;
+            c += reach;   // one graben per trough
+            continue;
+        }
+        ++c;
+    }
+    // Basal layer: the particles within two spacings of the lowest particle in their column.
+    double M = 0.0, P = 0.0, Mb = 0.0, Pb = 0.0;
+    std::vector<double> xiBase, xiBody;
+    for (int p = 0; p < hp.count; ++p)
+    {
+        const int col = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
+        const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
+        const double u = hp.velocity(p, 0);
+        M += hp.mass(p);
+        P += hp.mass(p)*u;
+        if (h - bottom[col] < 2.0*hp.spacing && bottom[col] < 2.0*hp.spacing)
+        {
+            Mb += hp.mass(p);
+            Pb += hp.mass(p)*u;
+            xiBase.push_back(hp.xi(p));
+        }
+        else
+        {
+            xiBody.push_back(hp.xi(p));
+        }
+    }
+    const double V = P/M;
+    m.basalSlipRatio = (Mb > 0.0 && V != 0.0) ? (Pb/Mb)/V : 0.0;
+    const double xb = median(xiBase), xr = median(xiBody);
+    m.basalStrainRatio = xr > 0.0 ? xb/xr : (xb > 0.0 ? 1e9 : 1.0);
+    m.shearBand = (xb > 0.5 && m.basalStrainRatio > 3.0) ? "along the base"
+                : (m.grabens > 0 ? "in the body" : "none");
+
+    if (m.bodies > 1) m.name = "breakaway";
+    else if (m.grabens >= 2) m.name = "spreading (horsts and grabens)";
+    else if (std::fabs(V) > 0.1*std::sqrt(g*H0) && m.basalSlipRatio > 0.8) m.name = "block sliding";
+    else m.name = "viscous elongation";
+    return m;
+}
+
+} // namespace mpm
+} // namespace slide

@@ -1,0 +1,378 @@
+#include "timeIntegrator.H"
+#include "quadraticBSpline.H"
+
+#include <cmath>
+
+namespace slide
+{
+namespace mpm
+{
+
+namespace
+{
+
+using Policy = Kokkos::RangePolicy<ExecutionSpace>;
+
+// Grid-to-particle transfer (velocity, APIC affine field, velocity gradient) with the step's reductions (bounding box, speed,
+// kinetic energy, finiteness) in the same pass.
+struct GridToParticle
+{
+    typedef double value_type[];
+    enum { xmax = 0, negXmin, ymax, negYmin, speed2, nonFinite, kinetic, nStats };
+    const unsigned value_count = nStats;
+
+    ParticleVector x, v;
+    ParticleTensor C, L;
+    ParticleScalar m;
+    NodeField vel;
+    double d, xOrigin, dt;
+    int i0, j0;
+    bool apic;
+
+    KOKKOS_INLINE_FUNCTION void operator()(const int p, value_type s) const
+    {
+        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
+        int bx, by;
+        double wx[3], dwx[3], wy[3], dwy[3];
+        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
+        QuadraticBSpline::evaluate(yg, by, wy, dwy);
+        double vx = 0.0, vy = 0.0, B00 = 0.0, B01 = 0.0, B10 = 0.0, B11 = 0.0;
+        double L00 = 0.0, L01 = 0.0, L10 = 0.0, L11 = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+            for (int b = 0; b < 3; ++b)
+            {
+                const double w = wx[a]*wy[b];
+                const double gx = dwx[a]*wy[b]/d, gy = wx[a]*dwy[b]/d;
+                const double ux = vel(bx + a, by + b, 0), uy = vel(bx + a, by + b, 1);
+                const double dx = (bx + a - xg)*d, dy = (by + b - yg)*d;
+                vx += w*ux;
+                vy += w*uy;
+                B00 += w*ux*dx; B01 += w*ux*dy;
+                B10 += w*uy*dx; B11 += w*uy*dy;
+                L00 += ux*gx; L01 += ux*gy;
+                L10 += uy*gx; L11 += uy*gy;
+            }
+        }
+        const double k = apic ? QuadraticBSpline::apicInverseFactor/(d*d) : 0.0;
+        C(p, 0) = k*B00; C(p, 1) = k*B01; C(p, 2) = k*B10; C(p, 3) = k*B11;
+        L(p, 0) = L00; L(p, 1) = L01; L(p, 2) = L10; L(p, 3) = L11;
+        v(p, 0) = vx;
+        v(p, 1) = vy;
+        // Statistics of where the particles are going; they move in the stress pass,
+        // after the nodal averaging has used the weights at the old positions.
+        const double nx = x(p, 0) + dt*vx, ny = x(p, 1) + dt*vy;
+        const double v2 = vx*vx + vy*vy;
+        if (!(std::isfinite(nx) && std::isfinite(ny) && std::isfinite(v2))) s[nonFinite] = 1.0;
+        if (nx > s[xmax]) s[xmax] = nx;
+        if (-nx > s[negXmin]) s[negXmin] = -nx;
+        if (ny > s[ymax]) s[ymax] = ny;
+        if (-ny > s[negYmin]) s[negYmin] = -ny;
+        if (v2 > s[speed2]) s[speed2] = v2;
+        s[kinetic] += 0.5*m(p)*v2;
+    }
+
+    KOKKOS_INLINE_FUNCTION void join(volatile value_type dst, const volatile value_type src) const
+    {
+        for (int c = 0; c < nStats; ++c)
+        {
+            if (c == kinetic) dst[c] += src[c];
+            else if (src[c] > dst[c]) dst[c] = src[c];
+        }
+    }
+
+    KOKKOS_INLINE_FUNCTION void init(value_type dst) const
+    {
+        for (int c = 0; c < nStats; ++c) dst[c] = (c == kinetic || c == nonFinite || c == speed2) ? 0.0 : -1e300;
+    }
+};
+
+StepStatistics toStatistics(const double* r)
+{
+    StepStatistics s;
+    s.xmax = r[GridToParticle::xmax];
+    s.xmin = -r[GridToParticle::negXmin];
+    s.ymax = r[GridToParticle::ymax];
+    s.ymin = -r[GridToParticle::negYmin];
+    s.maxSpeed = std::sqrt(r[GridToParticle::speed2]);
+    s.kineticEnergy = r[GridToParticle::kinetic];
+    s.finite = r[GridToParticle::nonFinite] == 0.0 && std::isfinite(s.xmax + s.xmin + s.ymax + s.ymin);
+    return s;
+}
+
+} // namespace
+
+TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay, const BasalContact& contact,
+                               const MpmControls& controls, const double density)
+:
+    frame_(frame), clay_(clay), contact_(contact), controls_(controls),
+    waveSpeed_(std::sqrt(clay.constrainedModulus()/density))
+{}
+
+double TimeIntegrator::stableTimeStep(const double cellSize, const double maxSpeed) const
+{
+    return controls_.courant*cellSize/(waveSpeed_ + maxSpeed);   // Eq. (6)
+}
+
+StepStatistics TimeIntegrator::statistics(const MaterialPoints& mp)
+{
+    GridToParticle f;
+    double r[GridToParticle::nStats];
+    f.init(r);
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.position);
+    auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.velocity);
+    auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.mass);
+    for (int p = 0; p < mp.count; ++p)
+    {
+        const double v2 = v(p, 0)*v(p, 0) + v(p, 1)*v(p, 1);
+        r[GridToParticle::xmax] = std::max(r[GridToParticle::xmax], x(p, 0));
+        r[GridToParticle::negXmin] = std::max(r[GridToParticle::negXmin], -x(p, 0));
+        r[GridToParticle::ymax] = std::max(r[GridToParticle::ymax], x(p, 1));
+        r[GridToParticle::negYmin] = std::max(r[GridToParticle::negYmin], -x(p, 1));
+        r[GridToParticle::speed2] = std::max(r[GridToParticle::speed2], v2);
+        r[GridToParticle::kinetic] += 0.5*m(p)*v2;
+        if (!std::isfinite(x(p, 0) + x(p, 1) + v2)) r[GridToParticle::nonFinite] = 1.0;
+    }
+    return toStatistics(r);
+}
+
+void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& grid) const
+{
+    // contribute() adds into the view (the duplicates on OpenMP, the view itself
+    // with CUDA atomics): both are zeroed first.
+    Kokkos::deep_copy(grid.nodal, 0.0);
+    grid.nodalScatter.reset_except(grid.nodal);
+    auto scatter = grid.nodalScatter;
+    const auto x = mp.position;
+    const auto v = mp.velocity;
+    const auto C = mp.affine;
+    const auto sig = mp.stress;
+    const auto m = mp.mass;
+    const auto V = mp.volume;
+    const double d = grid.d, xOrigin = grid.xOrigin;
+    const int i0 = grid.i0, j0 = grid.j0;
+    const double gX = frame_.gravityX, gY = frame_.gravityY;
+    Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    {
+        auto acc = scatter.access();
+        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
+        int bx, by;
+        double wx[3], dwx[3], wy[3], dwy[3];
+        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
+        QuadraticBSpline::evaluate(yg, by, wy, dwy);
+        const double mp_ = m(p), Vp = V(p);
+        const double sxx = sig(p, 0), syy = sig(p, 1), sxy = sig(p, 3);
+        const double vx = v(p, 0), vy = v(p, 1);
+        const double C00 = C(p, 0), C01 = C(p, 1), C10 = C(p, 2), C11 = C(p, 3);
+        for (int a = 0; a < 3; ++a)
+        {
+            for (int b = 0; b < 3; ++b)
+            {
+                const double w = wx[a]*wy[b];
+                const double gx = dwx[a]*wy[b]/d, gy = wx[a]*dwy[b]/d;
+                const double dx = (bx + a - xg)*d, dy = (by + b - yg)*d;
+                const double mw = mp_*w;
+                const int i = bx + a, j = by + b;
+                acc(i, j, BackgroundGrid::mass) += mw;
+                acc(i, j, BackgroundGrid::momentumX) += mw*(vx + C00*dx + C01*dy);
+                acc(i, j, BackgroundGrid::momentumY) += mw*(vy + C10*dx + C11*dy);
+                acc(i, j, BackgroundGrid::forceX) += mw*gX - Vp*(sxx*gx + sxy*gy);
+                acc(i, j, BackgroundGrid::forceY) += mw*gY - Vp*(sxy*gx + syy*gy);
+                acc(i, j, BackgroundGrid::volume) += Vp*w;
+            }
+        }
+    });
+    Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
+}
+
+void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
+{
+    const auto nodal = grid.nodal;
+    const auto vel = grid.velocity;
+    const double d = grid.d, xOrigin = grid.xOrigin;
+    const int i0 = grid.i0, j0 = grid.j0, ja = grid.wj0 - grid.j0, jb = ja + grid.wnj;
+    const BaseLevelSet level = frame_.level;
+    const BasalContact contact = contact_;
+    const bool rearWall = frame_.rearWall;
+    const double rearX = frame_.rearX;
+    const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
+    Kokkos::parallel_for("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i)
+    {
+        const double xi = xOrigin + (i0 + i)*d;
+        const double yb = level.height(xi), slope = level.slope(xi);
+        const double norm = std::sqrt(1.0 + slope*slope);
+        const double tx = 1.0/norm, ty = slope/norm;
+
+        int nc = 0;
+        int row[BasalContact::maxNodes];
+        double cm[BasalContact::maxNodes], cvx[BasalContact::maxNodes], cvy[BasalContact::maxNodes];
+        double cvol[BasalContact::maxNodes], coff[BasalContact::maxNodes];
+        for (int j = ja; j < jb; ++j)
+        {
+            const double m = nodal(i, j, BackgroundGrid::mass);
+            double vx = 0.0, vy = 0.0;
+            if (m > 0.0)
+            {
+                vx = (nodal(i, j, BackgroundGrid::momentumX) + dt*nodal(i, j, BackgroundGrid::forceX))/m;
+                vy = (nodal(i, j, BackgroundGrid::momentumY) + dt*nodal(i, j, BackgroundGrid::forceY))/m;
+            }
+            const double offset = (yb - (j0 + j)*d)/d;   // how far the node lies below the base, in cells
+            if (offset >= -1e-9 && offset < 1.5 && nc < BasalContact::maxNodes)
+            {
+                row[nc] = j;
+                cm[nc] = m;
+                cvx[nc] = vx;
+                cvy[nc] = vy;
+                cvol[nc] = nodal(i, j, BackgroundGrid::volume);
+                coff[nc] = offset;
+                ++nc;
+            }
+            else if (offset >= 1.5)
+            {
+                vx = 0.0;   // deep inside the base
+                vy = 0.0;
+            }
+            vel(i, j, 0) = vx;
+            vel(i, j, 1) = vy;
+        }
+        if (nc > 0)
+        {
+            const double fraction = BasalContact::contactFraction(nc, cvol, coff, d);
+            contact.apply(nc, cm, cvx, cvy, tx, ty, d*norm, fraction, dt);
+            for (int k = 0; k < nc; ++k)
+            {
+                vel(i, row[k], 0) = cvx[k];
+                vel(i, row[k], 1) = cvy[k];
+            }
+        }
+        // The rear wall (normal to the frame's x axis) holds material back and lets it go.
+        if (rearWall && xi <= rearX + 1e-9*d)
+        {
+            for (int j = ja; j < jb; ++j)
+            {
+                if (vel(i, j, 0) < 0.0) vel(i, j, 0) = 0.0;
+            }
+        }
+    });
+}
+
+StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, const BackgroundGrid& grid, const double dt) const
+{
+    GridToParticle f;
+    f.x = mp.position;
+    f.v = mp.velocity;
+    f.C = mp.affine;
+    f.L = mp.velocityGradient;
+    f.m = mp.mass;
+    f.vel = grid.velocity;
+    f.d = grid.d;
+    f.xOrigin = grid.xOrigin;
+    f.dt = dt;
+    f.i0 = grid.i0;
+    f.j0 = grid.j0;
+    f.apic = controls_.transfer == MpmControls::Transfer::apic;
+    Kokkos::View<double*, Kokkos::HostSpace> r("stepStatistics", GridToParticle::nStats);
+    Kokkos::parallel_reduce("gridToParticle", Policy(0, mp.count), f, r);
+    return toStatistics(r.data());
+}
+
+void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid) const
+{
+    // Nodal averaging of the volumetric strain rate: particles scatter m tr(L)
+    // to the nodes and gather the mass-weighted nodal average back, so the
+    // volumetric constraint of nu -> 0.5 is counted per node rather than per
+    // particle (which locks).
+    const auto x = mp.position;
+    const auto L = mp.velocityGradient;
+    const auto m = mp.mass;
+    const auto dil = mp.dilatation;
+    const auto nodal = grid.nodal;
+    const double d = grid.d, xOrigin = grid.xOrigin;
+    const int i0 = grid.i0, j0 = grid.j0;
+    if (controls_.volumetricLocking == MpmControls::VolumetricLocking::none)
+    {
+        Kokkos::parallel_for("dilatation", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+        {
+            dil(p) = L(p, 0) + L(p, 3);
+        });
+        return;
+    }
+    Kokkos::deep_copy(grid.dilatation, 0.0);
+    grid.dilatationScatter.reset_except(grid.dilatation);
+    auto scatter = grid.dilatationScatter;
+    Kokkos::parallel_for("dilatationToGrid", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    {
+        auto acc = scatter.access();
+        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
+        int bx, by;
+        double wx[3], dwx[3], wy[3], dwy[3];
+        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
+        QuadraticBSpline::evaluate(yg, by, wy, dwy);
+        const double q = m(p)*(L(p, 0) + L(p, 3));
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) acc(bx + a, by + b) += wx[a]*wy[b]*q;
+    });
+    Kokkos::Experimental::contribute(grid.dilatation, grid.dilatationScatter);
+    const auto nodeDil = grid.dilatation;
+    Kokkos::parallel_for("dilatationToParticle", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    {
+        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
+        int bx, by;
+        double wx[3], dwx[3], wy[3], dwy[3];
+        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
+        QuadraticBSpline::evaluate(yg, by, wy, dwy);
+        double s = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+            for (int b = 0; b < 3; ++b)
+            {
+                const double mn = nodal(bx + a, by + b, BackgroundGrid::mass);
+                if (mn > 0.0) s += wx[a]*wy[b]*nodeDil(bx + a, by + b)/mn;
+            }
+        }
+        dil(p) = s;
+    });
+}
+
+void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
+{
+    const UndrainedClay clay = clay_;
+    const auto L = mp.velocityGradient;
+    const auto sig = mp.stress;
+    const auto V = mp.volume;
+    const auto dil = mp.dilatation;
+    const auto xi = mp.plasticShearStrain;
+    const auto su = mp.strength;
+    const auto rate = mp.shearStrainRate;
+    const auto plasticRate = mp.plasticShearStrainRate;
+    const auto x = mp.position;
+    const auto v = mp.velocity;
+    Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    {
+        const double Lp[4] = {L(p, 0), L(p, 1), L(p, 2), L(p, 3)};
+        double s[4] = {sig(p, 0), sig(p, 1), sig(p, 2), sig(p, 3)};
+        double xip = xi(p), sup, gdot;
+        const double dXi = clay.update(Lp, dil(p), dt, s, xip, sup, gdot);
+        for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
+        xi(p) = xip;
+        su(p) = sup;
+        rate(p) = gdot;
+        plasticRate(p) = dXi/dt;
+        V(p) *= 1.0 + dil(p)*dt;
+        x(p, 0) += dt*v(p, 0);
+        x(p, 1) += dt*v(p, 1);
+    });
+}
+
+StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
+{
+    particleToGrid(mp, grid);
+    updateGrid(grid, dt);
+    const StepStatistics s = gridToParticle(mp, grid, dt);
+    averageDilatation(mp, grid);
+    updateStress(mp, dt);
+    return s;
+}
+
+} // namespace mpm
+} // namespace slide
