@@ -11,7 +11,7 @@ namespace mpm
 unsigned long long BackgroundGrid::bytesFor(const long long nNodes)
 {
     const unsigned long long threads = static_cast<unsigned long long>(ExecutionSpace().concurrency());
-    return 8ull*static_cast<unsigned long long>(nNodes)*((nComponents + 1)*(threads + 1) + 2);
+    return 8ull*static_cast<unsigned long long>(nNodes)*((nComponents + 2)*(threads + 1) + 2);
 }
 
 bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, unsigned long long maxBytes)
@@ -39,8 +39,8 @@ bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, uns
     nodal = NodeField("nodal", ni, nj, nComponents);
     nodalScatter = NodeScatter(nodal);
     velocity = NodeField("nodeVelocity", ni, nj, 2);
-    dilatation = NodeScalar("nodeDilatation", ni, nj);
-    dilatationScatter = NodeScalarScatter(dilatation);
+    averaging = NodeField("averaging", ni, nj, 2);
+    averagingScatter = NodeScatter(averaging);
     return true;
 }
 

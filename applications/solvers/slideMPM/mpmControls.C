@@ -54,8 +54,8 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     }
     if (d.found("volumetricLocking"))
     {
-        c.volumetricLocking = d.getWordOneOf("volumetricLocking", {"nodalAveraging", "none"}) == "none"
-            ? VolumetricLocking::none : VolumetricLocking::nodalAveraging;
+        c.volumetricLocking = d.getWordOneOf("volumetricLocking", {"cellAveraging", "none"}) == "none"
+            ? VolumetricLocking::none : VolumetricLocking::cellAveraging;
     }
     if (d.found("transfer"))
     {
@@ -75,7 +75,7 @@ std::string MpmControls::describe() const
     os << "setting " << setting << ": cell H0/" << cellsPerHeight << ", " << particlesPerCell << "x"
        << particlesPerCell << " particles per cell, quadratic B-splines, "
        << (transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
-       << (volumetricLocking == VolumetricLocking::nodalAveraging ? "nodal averaging" : "not treated")
+       << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
        << ", Courant " << courant << " (Eq. 6), E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
     return os.str();
 }

@@ -143,6 +143,9 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     Kokkos::deep_copy(grid.nodal, 0.0);
     grid.nodalScatter.reset_except(grid.nodal);
     auto scatter = grid.nodalScatter;
+    const bool cellPressure = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
+    if (cellPressure) averageCellPressure(mp, grid);
+    const auto avg = grid.averaging;
     const auto x = mp.position;
     const auto v = mp.velocity;
     const auto C = mp.affine;
@@ -161,7 +164,17 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         QuadraticBSpline::evaluate(xg, bx, wx, dwx);
         QuadraticBSpline::evaluate(yg, by, wy, dwy);
         const double mp_ = m(p), Vp = V(p);
-        const double sxx = sig(p, 0), syy = sig(p, 1), sxy = sig(p, 3);
+        double sxx = sig(p, 0), syy = sig(p, 1);
+        const double sxy = sig(p, 3);
+        if (cellPressure)
+        {
+            // B-bar: the force sees the cell's mean pressure, as the stress update
+            // sees the cell's mean dilatation, so the two stay work-conjugate.
+            const int ci = static_cast<int>(std::floor(xg)), cj = static_cast<int>(std::floor(yg));
+            const double shift = -(sxx + syy + sig(p, 2))/3.0 - avg(ci, cj, 0)/avg(ci, cj, 1);
+            sxx += shift;
+            syy += shift;
+        }
         const double vx = v(p, 0), vy = v(p, 1);
         const double C00 = C(p, 0), C01 = C(p, 1), C10 = C(p, 2), C11 = C(p, 3);
         for (int a = 0; a < 3; ++a)
@@ -183,6 +196,27 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         }
     });
     Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
+}
+
+void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGrid& grid) const
+{
+    const auto x = mp.position;
+    const auto sig = mp.stress;
+    const auto V = mp.volume;
+    const double d = grid.d, xOrigin = grid.xOrigin;
+    const int i0 = grid.i0, j0 = grid.j0;
+    Kokkos::deep_copy(grid.averaging, 0.0);
+    grid.averagingScatter.reset_except(grid.averaging);
+    auto scatter = grid.averagingScatter;
+    Kokkos::parallel_for("pressureToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    {
+        auto acc = scatter.access();
+        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
+        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        acc(i, j, 0) += -V(p)*(sig(p, 0) + sig(p, 1) + sig(p, 2))/3.0;
+        acc(i, j, 1) += V(p);
+    });
+    Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
 }
 
 void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
@@ -278,15 +312,14 @@ StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, const Backgrou
 
 void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid) const
 {
-    // Nodal averaging of the volumetric strain rate: particles scatter m tr(L)
-    // to the nodes and gather the mass-weighted nodal average back, so the
-    // volumetric constraint of nu -> 0.5 is counted per node rather than per
-    // particle (which locks).
+    // Against volumetric locking (nu -> 0.5): the volumetric strain rate of a
+    // particle is replaced by the volume-weighted mean over the particles of its
+    // cell, so the incompressibility constraint is counted per cell rather than
+    // per particle (B-bar; the force side uses the cell's mean pressure).
     const auto x = mp.position;
     const auto L = mp.velocityGradient;
-    const auto m = mp.mass;
+    const auto V = mp.volume;
     const auto dil = mp.dilatation;
-    const auto nodal = grid.nodal;
     const double d = grid.d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0;
     if (controls_.volumetricLocking == MpmControls::VolumetricLocking::none)
@@ -297,40 +330,24 @@ void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid)
         });
         return;
     }
-    Kokkos::deep_copy(grid.dilatation, 0.0);
-    grid.dilatationScatter.reset_except(grid.dilatation);
-    auto scatter = grid.dilatationScatter;
-    Kokkos::parallel_for("dilatationToGrid", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    Kokkos::deep_copy(grid.averaging, 0.0);
+    grid.averagingScatter.reset_except(grid.averaging);
+    auto scatter = grid.averagingScatter;
+    const auto avg = grid.averaging;
+    Kokkos::parallel_for("dilatationToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         auto acc = scatter.access();
-        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
-        int bx, by;
-        double wx[3], dwx[3], wy[3], dwy[3];
-        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
-        QuadraticBSpline::evaluate(yg, by, wy, dwy);
-        const double q = m(p)*(L(p, 0) + L(p, 3));
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) acc(bx + a, by + b) += wx[a]*wy[b]*q;
+        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
+        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        acc(i, j, 0) += V(p)*(L(p, 0) + L(p, 3));
+        acc(i, j, 1) += V(p);
     });
-    Kokkos::Experimental::contribute(grid.dilatation, grid.dilatationScatter);
-    const auto nodeDil = grid.dilatation;
-    Kokkos::parallel_for("dilatationToParticle", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
+    Kokkos::parallel_for("dilatationFromCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
-        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
-        int bx, by;
-        double wx[3], dwx[3], wy[3], dwy[3];
-        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
-        QuadraticBSpline::evaluate(yg, by, wy, dwy);
-        double s = 0.0;
-        for (int a = 0; a < 3; ++a)
-        {
-            for (int b = 0; b < 3; ++b)
-            {
-                const double mn = nodal(bx + a, by + b, BackgroundGrid::mass);
-                if (mn > 0.0) s += wx[a]*wy[b]*nodeDil(bx + a, by + b)/mn;
-            }
-        }
-        dil(p) = s;
+        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
+        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        dil(p) = avg(i, j, 0)/avg(i, j, 1);
     });
 }
 
