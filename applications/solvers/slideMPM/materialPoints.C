@@ -70,7 +70,7 @@ void baseCoordinates(const scene::BaseProfile& base, double X, double Z, double&
 } // namespace
 
 MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& frame, const UndrainedClay& clay,
-                                   const double nu, const double d, const int ppc)
+                                   const double nu, const double d, const int ppc, const bool geostatic)
 {
     const double a = d/ppc;
     const double s0 = sc.slide.rearPosition, s1 = sc.slide.frontPosition();
@@ -112,7 +112,7 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
             const double H = sc.slide.thickness(s);
             if (h >= H) continue;
             // Geostatic stress of the column above (normal to the local base).
-            const double sv = -rho*sc.g*std::cos(sc.base.angle(s))*(H - h);
+            const double sv = geostatic ? -rho*sc.g*std::cos(sc.base.angle(s))*(H - h) : 0.0;
             hx.push_back(xf);
             hy.push_back(yf);
             hs.push_back(sv);

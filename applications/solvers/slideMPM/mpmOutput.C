@@ -10,19 +10,34 @@ namespace slide
 namespace mpm
 {
 
+namespace
+{
+
+// A copy on the host that does not alias the device view, even where the
+// backend's memory is the host's (a snapshot, not a window).
+template<class V>
+typename V::HostMirror snapshot(const V& v)
+{
+    typename V::HostMirror h = Kokkos::create_mirror(v);
+    Kokkos::deep_copy(h, v);
+    return h;
+}
+
+} // namespace
+
 HostPoints::HostPoints(const MaterialPoints& mp)
 :
     count(mp.count),
     spacing(mp.spacing),
-    position(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.position)),
-    velocity(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.velocity)),
-    stress(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.stress)),
-    mass(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.mass)),
-    volume(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.volume)),
-    xi(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.plasticShearStrain)),
-    strength(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.strength)),
-    shearStrainRate(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.shearStrainRate)),
-    plasticShearStrainRate(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.plasticShearStrainRate))
+    position(snapshot(mp.position)),
+    velocity(snapshot(mp.velocity)),
+    stress(snapshot(mp.stress)),
+    mass(snapshot(mp.mass)),
+    volume(snapshot(mp.volume)),
+    xi(snapshot(mp.plasticShearStrain)),
+    strength(snapshot(mp.strength)),
+    shearStrainRate(snapshot(mp.shearStrainRate)),
+    plasticShearStrainRate(snapshot(mp.plasticShearStrainRate))
 {}
 
 double HostPoints::frontX() const

@@ -2,6 +2,7 @@
 #include "quadraticBSpline.H"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace slide
 {
@@ -227,6 +228,8 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
     const int i0 = grid.i0, j0 = grid.j0, ja = grid.wj0 - grid.j0, jb = ja + grid.wnj;
     const BaseLevelSet level = frame_.level;
     const BasalContact contact = contact_;
+    const bool noSlip = contact_.type == BasalContact::Type::noSlip;
+    const double gSep = std::sqrt(frame_.gravityX*frame_.gravityX + frame_.gravityY*frame_.gravityY);
     const bool rearWall = frame_.rearWall;
     const double rearX = frame_.rearX;
     const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
@@ -272,9 +275,22 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
         if (nc > 0)
         {
             const double fraction = BasalContact::contactFraction(nc, cvol, coff, d);
-            contact.apply(nc, cm, cvx, cvy, tx, ty, d*norm, fraction, dt);
+            contact.apply(nc, cm, cvx, cvy, tx, ty, d*norm, fraction, dt, gSep*dt);
+            // No slip: the nodes below the base node take the velocity of their
+            // mirror images above it, reversed, so that the B-splines interpolate
+            // zero velocity on the base line (for a base on a grid line) instead of
+            // letting the lowest material slip. (Frictional bases keep the contact
+            // velocities, which carry the basal impulse exactly.)
+            int kb = 0;
+            for (int k = 1; k < nc; ++k) if (coff[k] < coff[kb]) kb = k;
             for (int k = 0; k < nc; ++k)
             {
+                const int mirror = 2*row[kb] - row[k];
+                if (noSlip && k != kb && cm[kb] > 0.0 && mirror >= ja && mirror < jb)
+                {
+                    cvx[k] = 2.0*cvx[kb] - vel(i, mirror, 0);
+                    cvy[k] = 2.0*cvy[kb] - vel(i, mirror, 1);
+                }
                 vel(i, row[k], 0) = cvx[k];
                 vel(i, row[k], 1) = cvy[k];
             }
@@ -364,6 +380,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
     const auto plasticRate = mp.plasticShearStrainRate;
     const auto x = mp.position;
     const auto v = mp.velocity;
+    const BaseLevelSet level = frame_.level;
     Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         const double Lp[4] = {L(p, 0), L(p, 1), L(p, 2), L(p, 3)};
@@ -376,8 +393,26 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
         rate(p) = gdot;
         plasticRate(p) = dXi/dt;
         V(p) *= 1.0 + dil(p)*dt;
-        x(p, 0) += dt*v(p, 0);
-        x(p, 1) += dt*v(p, 1);
+        const double xn = x(p, 0) + dt*v(p, 0);
+        double yn = x(p, 1) + dt*v(p, 1);
+        // The grid's contact keeps nodes out of the base, but a particle near it
+        // also takes velocity from nodes above that may still be descending:
+        // its centre is put back on the base and its approach removed.
+        const double yb = level.height(xn);
+        if (yn < yb)
+        {
+            const double s = level.slope(xn), n = std::sqrt(1.0 + s*s);
+            const double nx = -s/n, ny = 1.0/n;
+            const double vn = v(p, 0)*nx + v(p, 1)*ny;
+            if (vn < 0.0)
+            {
+                v(p, 0) -= vn*nx;
+                v(p, 1) -= vn*ny;
+            }
+            yn = yb;
+        }
+        x(p, 0) = xn;
+        x(p, 1) = yn;
     });
 }
 
@@ -389,6 +424,22 @@ StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, co
     averageDilatation(mp, grid);
     updateStress(mp, dt);
     return s;
+}
+
+void advanceTo(const TimeIntegrator& integrator, MaterialPoints& mp, BackgroundGrid& grid, double& t, const double T,
+               StepStatistics& stats)
+{
+    while (t < T - 1e-12*std::max(1.0, T))
+    {
+        if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, 8ull << 30))
+        {
+            throw std::runtime_error("advanceTo: the grid outgrew 8 GiB");
+        }
+        const double dt = std::min(integrator.stableTimeStep(grid.d, stats.maxSpeed), T - t);
+        stats = integrator.step(mp, grid, dt);
+        t += dt;
+        if (!stats.finite) throw std::runtime_error("advanceTo: non-finite particle state");
+    }
 }
 
 } // namespace mpm
