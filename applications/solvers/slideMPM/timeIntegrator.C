@@ -41,12 +41,13 @@ struct GridToParticle
         double L00 = 0.0, L01 = 0.0, L10 = 0.0, L11 = 0.0;
         for (int a = 0; a < 3; ++a)
         {
+            const double dx = bx + a - xg;   // node - particle, in cells
             for (int b = 0; b < 3; ++b)
             {
                 const double w = wx[a]*wy[b];
-                const double gx = dwx[a]*wy[b]/d, gy = wx[a]*dwy[b]/d;
+                const double gx = dwx[a]*wy[b], gy = wx[a]*dwy[b];   // per cell
                 const double ux = vel(bx + a, by + b, 0), uy = vel(bx + a, by + b, 1);
-                const double dx = (bx + a - xg)*d, dy = (by + b - yg)*d;
+                const double dy = by + b - yg;
                 vx += w*ux;
                 vy += w*uy;
                 B00 += w*ux*dx; B01 += w*ux*dy;
@@ -55,9 +56,10 @@ struct GridToParticle
                 L10 += uy*gx; L11 += uy*gy;
             }
         }
-        const double k = apic ? QuadraticBSpline::apicInverseFactor/(d*d) : 0.0;
+        const double invD = 1.0/d;
+        const double k = apic ? QuadraticBSpline::apicInverseFactor*invD : 0.0;   // B is in cells: 4/d^2 * d
         C(p, 0) = k*B00; C(p, 1) = k*B01; C(p, 2) = k*B10; C(p, 3) = k*B11;
-        L(p, 0) = L00; L(p, 1) = L01; L(p, 2) = L10; L(p, 3) = L11;
+        L(p, 0) = L00*invD; L(p, 1) = L01*invD; L(p, 2) = L10*invD; L(p, 3) = L11*invD;
         v(p, 0) = vx;
         v(p, 1) = vy;
         // Statistics of where the particles are going; they move in the stress pass,
@@ -164,7 +166,7 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         double wx[3], dwx[3], wy[3], dwy[3];
         QuadraticBSpline::evaluate(xg, bx, wx, dwx);
         QuadraticBSpline::evaluate(yg, by, wy, dwy);
-        const double mp_ = m(p), Vp = V(p);
+        const double mp_ = m(p), Vp = V(p), invD = 1.0/d;
         double sxx = sig(p, 0), syy = sig(p, 1);
         const double sxy = sig(p, 3);
         if (cellPressure)
@@ -177,21 +179,23 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
             syy += shift;
         }
         const double vx = v(p, 0), vy = v(p, 1);
-        const double C00 = C(p, 0), C01 = C(p, 1), C10 = C(p, 2), C11 = C(p, 3);
+        const double C00 = C(p, 0)*d, C01 = C(p, 1)*d, C10 = C(p, 2)*d, C11 = C(p, 3)*d;
+        const double Sxx = Vp*sxx*invD, Syy = Vp*syy*invD, Sxy = Vp*sxy*invD;
         for (int a = 0; a < 3; ++a)
         {
+            const double dx = bx + a - xg;   // node - particle, in cells
             for (int b = 0; b < 3; ++b)
             {
                 const double w = wx[a]*wy[b];
-                const double gx = dwx[a]*wy[b]/d, gy = wx[a]*dwy[b]/d;
-                const double dx = (bx + a - xg)*d, dy = (by + b - yg)*d;
+                const double gx = dwx[a]*wy[b], gy = wx[a]*dwy[b];   // times 1/d in S
+                const double dy = by + b - yg;
                 const double mw = mp_*w;
                 const int i = bx + a, j = by + b;
                 acc(i, j, BackgroundGrid::mass) += mw;
                 acc(i, j, BackgroundGrid::momentumX) += mw*(vx + C00*dx + C01*dy);
                 acc(i, j, BackgroundGrid::momentumY) += mw*(vy + C10*dx + C11*dy);
-                acc(i, j, BackgroundGrid::forceX) += mw*gX - Vp*(sxx*gx + sxy*gy);
-                acc(i, j, BackgroundGrid::forceY) += mw*gY - Vp*(sxy*gx + syy*gy);
+                acc(i, j, BackgroundGrid::forceX) += mw*gX - (Sxx*gx + Sxy*gy);
+                acc(i, j, BackgroundGrid::forceY) += mw*gY - (Sxy*gx + Syy*gy);
                 acc(i, j, BackgroundGrid::volume) += Vp*w;
             }
         }
