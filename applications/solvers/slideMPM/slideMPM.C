@@ -249,8 +249,8 @@ int main(int argc, char** argv)
             os << '[';
             for (std::size_t k = 0; k < mechanisms.size(); ++k)
             {
-                os << (k ? ", " : "") << "[" << output::jsonNumber(mechanisms[k].first) << ", \""
-                   << output::jsonEscape(mechanisms[k].second) << "\"]";
+                os << (k ? ", " : "") << "[" << output::jsonNumber(mechanisms[k].first) << ", "
+                   << output::jsonEscape(mechanisms[k].second) << "]";
             }
             os << ']';
             summary.extra.emplace_back("mechanism_history", os.str());

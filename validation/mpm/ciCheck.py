@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""CI subset of the MPM validation (CTest slideMPM_physicsSubset): coarse, short
+runs whose expected values come from physics, not from tuning.
+
+  - Krone-Wright flume, cell H0/10 with 2x2 particles, 4.1 s: the front lies
+    within 10 % of the converged leading-order lubrication solution, 5.50 m
+    from the end wall (validation/dam/README.md).
+  - Table 1 Case 9 (s_b = 0.45 kPa on 5 deg), cell H0/5 with 2x2 particles, 20 s:
+    the mechanism is block sliding and the front travel lies between the rigid
+    block laws for thickness H_stability = 3.4 m and H0 = 5 m (126.8 m to 141.0 m),
+    with 10 % margin.
+
+Usage: ciCheck.py <slideMPM> <work dir>"""
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+top = os.path.abspath(os.path.join(here, "..", ".."))
+sys.path.insert(0, os.path.join(top, "validation", "lib"))
+from slidefoam_io import read_summary  # noqa: E402
+
+
+def run(app, template, work, name, mpmdict, end=None):
+    d = os.path.join(work, name)
+    shutil.rmtree(d, ignore_errors=True)
+    shutil.copytree(template, d, ignore=shutil.ignore_patterns("postProcessing", "log.*"))
+    with open(os.path.join(d, "system", "mpmDict"), "w") as f:
+        f.write(mpmdict + "writeFields no;\n")
+    if end is not None:
+        ctl = os.path.join(d, "system", "controlDict")
+        text = re.sub(r"^endTime\s+[^;]*;", "endTime %g;" % end, open(ctl).read(), flags=re.M)
+        open(ctl, "w").write(text)
+    env = dict(os.environ, OMP_PROC_BIND="false", OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "2"))
+    p = subprocess.run([app, "-case", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env)
+    if p.returncode != 0:
+        print(p.stdout.decode(errors="replace")[-2000:])
+        raise SystemExit("FAIL: %s exited with %d" % (name, p.returncode))
+    return read_summary(os.path.join(d, "postProcessing", "slideMPM", "summary.json"))
+
+
+def main():
+    app, work = sys.argv[1], sys.argv[2]
+    os.makedirs(work, exist_ok=True)
+    failures = []
+
+    s = run(app, os.path.join(top, "tutorials", "kroneWrightRun15"), work, "flume",
+            "setting fast;\ncellsPerHeight 10;\nparticlesPerCell 2;\n")
+    front = 1.8 + s["runout_m"]
+    ok = abs(front/5.50 - 1.0) <= 0.10
+    print("flume H0/10: front %.3f m from the end wall at 4.1 s, lubrication 5.50 m (%+.1f %%): %s"
+          % (front, 100.0*(front/5.50 - 1.0), "ok" if ok else "FAIL"))
+    if not ok:
+        failures.append("flume")
+
+    s = run(app, os.path.join(top, "tutorials", "table1", "case09"), work, "case09",
+            "setting fast;\ncellsPerHeight 5;\nparticlesPerCell 2;\n", end=20.0)
+    a = lambda H: 9.81*math.sin(math.radians(5.0)) - 450.0/(600.0*H)  # noqa: E731
+    lo, hi = 0.5*a(4*5000.0/(600*9.81))*400.0, 0.5*a(5.0)*400.0
+    ok = s["mechanism"] == "block sliding" and 0.9*lo <= s["runout_m"] <= 1.1*hi
+    print("case 9 H0/5: %s, %.1f m at 20 s (rigid block laws %.1f to %.1f m): %s"
+          % (s["mechanism"], s["runout_m"], lo, hi, "ok" if ok else "FAIL"))
+    if not ok:
+        failures.append("case 9")
+    for k in ("mass_relative_change",):
+        if s[k] != 0.0:
+            failures.append("mass changed by %g" % s[k])
+    if failures:
+        raise SystemExit("FAIL: " + ", ".join(failures))
+    print("2 passed, 0 failed")
+
+
+if __name__ == "__main__":
+    main()
