@@ -62,7 +62,7 @@ def main():
         rows.append((cells, ppc, s["problem_size"], s["steps"], s["wall_time_s"], s["particle_updates_per_second"],
                      GATE + s["runout_m"]))
         print("H0/%d %dx%d: %d particles, %d steps, %.1f s, %.3g updates/s, front %.3f m"
-              % (cells, ppc, rows[-1][2], rows[-1][3], rows[-1][4], rows[-1][5], rows[-1][6]), flush=True)
+              % (cells, ppc, ppc, rows[-1][2], rows[-1][3], rows[-1][4], rows[-1][5], rows[-1][6]), flush=True)
     ref = rows[-1][6]
     sd, rd = run("slideDAM", 0, 0, work)
     dam = GATE + sd["runout_m"]

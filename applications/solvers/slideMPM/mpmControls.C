@@ -10,7 +10,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "writeFields", "progressInterval"});
+                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "writeFields", "progressInterval"});
     MpmControls c;
     c.setting = overrideSetting.empty() ? d.getWordOneOf("setting", {"reference", "fast"}, "reference")
                                         : overrideSetting;
@@ -61,6 +61,10 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.transfer = d.getWordOneOf("transfer", {"apic", "pic"}) == "pic" ? Transfer::pic : Transfer::apic;
     }
+    if (d.found("strainRate"))
+    {
+        c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
+    }
     c.writeFields = d.getBool("writeFields", true);
     if (d.found("progressInterval"))
     {
@@ -76,6 +80,7 @@ std::string MpmControls::describe() const
        << particlesPerCell << " particles per cell, quadratic B-splines, "
        << (transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
+       << ", Eq. (1) at the " << (plasticStrainRate ? "plastic" : "total") << " shear strain rate"
        << ", Courant " << courant << " (Eq. 6), E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
     return os.str();
 }

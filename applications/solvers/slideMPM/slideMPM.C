@@ -83,7 +83,8 @@ int main(int argc, char** argv)
         }
         const mpm::BaseFrame frame = mpm::BaseFrame::fromScene(sc);
         const mpm::UndrainedClay clay = mpm::UndrainedClay::fromYoungs(
-            sc.rheology, controls.youngsModulusRatio*sc.rheology.s_uo, controls.poissonRatio);
+            sc.rheology, controls.youngsModulusRatio*sc.rheology.s_uo, controls.poissonRatio,
+            controls.plasticStrainRate);
         mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc);
         mpm::BackgroundGrid grid(d, frame.rearX);
         const mpm::TimeIntegrator integrator(frame, clay, contactOf(sc.interface), controls, sc.slide.density);

@@ -50,7 +50,7 @@ struct SceneRun
     SceneRun(const scene::Scene& s, const mpm::MpmControls& c, double E, bool geostatic = true)
     :
         sc(s), controls(c), frame(mpm::BaseFrame::fromScene(s)),
-        clay(mpm::UndrainedClay::fromYoungs(s.rheology, E, c.poissonRatio)),
+        clay(mpm::UndrainedClay::fromYoungs(s.rheology, E, c.poissonRatio, c.plasticStrainRate)),
         points(mpm::MaterialPoints::seed(s, frame, clay, c.poissonRatio, s.slide.height/c.cellsPerHeight,
                                          c.particlesPerCell, geostatic)),
         grid(s.slide.height/c.cellsPerHeight, frame.rearX),

@@ -55,19 +55,44 @@ TEST(UndrainedClay, ElasticShearModulus)
 
 TEST(UndrainedClay, RateCurveFollowsEquation1)
 {
-    // At steady simple shear the stress sits on s_u(gdot) of the shared library.
+    // At steady simple shear the stress sits on s_u(gdot) of the shared library,
+    // with the rate taken as the total or the plastic one (equal once the elastic
+    // strain is steady; the Jaumann spin keeps it drifting by up to 3e-4).
     const rheology::HerschelBulkleyRemoulding m = material(0.45, 0.23, 1.0, 1.0);
-    const UndrainedClay c = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49);
-    for (double gdot : {0.006, 0.06, 0.6, 6.0, 60.0})
+    for (bool plastic : {false, true})
     {
-        double sig[4] = {0, 0, 0, 0}, xi = 0.0;
-        const double T = 0.5/gdot;          // 50 % shear strain: well past yield
-        const double tau = shear(c, gdot, T, T/2000.0, xi, sig);
-        // On the yield surface sqrt(J2) = s_u exactly; the Jaumann spin of simple
-        // shear tilts a little of it into normal stress differences.
-        EXPECT_NEAR(UndrainedClay::shearStress(sig), m.strength(gdot, 0.0), 1e-9*m.strength(gdot, 0.0)) << gdot;
-        EXPECT_NEAR(tau, m.strength(gdot, 0.0), 0.005*m.strength(gdot, 0.0)) << gdot;
+        const UndrainedClay c = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49, plastic);
+        for (double gdot : {0.006, 0.06, 0.6, 6.0, 60.0})
+        {
+            double sig[4] = {0, 0, 0, 0}, xi = 0.0;
+            const double T = 0.5/gdot;          // 50 % shear strain: well past yield
+            const double tau = shear(c, gdot, T, T/2000.0, xi, sig);
+            // On the yield surface sqrt(J2) = s_u; the spin of simple shear tilts a
+            // little of it into normal stress differences.
+            EXPECT_NEAR(UndrainedClay::shearStress(sig), m.strength(gdot, 0.0), 1e-3*m.strength(gdot, 0.0))
+                << gdot << (plastic ? " plastic" : " total");
+            EXPECT_NEAR(tau, m.strength(gdot, 0.0), 0.01*m.strength(gdot, 0.0)) << gdot;
+        }
     }
+}
+
+TEST(UndrainedClay, PlasticRateYieldsAtTheThresholdStrength)
+{
+    // Loaded from rest at a high rate, the total-rate variant yields at
+    // s_u(gdot) at once; the plastic-rate one yields at s_uo, then hardens to
+    // s_u(gdot) as the flow takes over the rate.
+    const rheology::HerschelBulkleyRemoulding m = material(0.45, 0.23, 1.0, 1.0);
+    const double gdot = 6.0, dt = 1e-5;
+    const UndrainedClay total = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49, false);
+    const UndrainedClay plastic = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49, true);
+    double a[4] = {0, 0, 0, 0}, b[4] = {0, 0, 0, 0}, xa = 0.0, xb = 0.0;
+    const double L[4] = {0.0, gdot, 0.0, 0.0};
+    double suA = 0.0, suB = 0.0, r;
+    while (xa == 0.0) total.update(L, 0.0, dt, a, xa, suA, r);
+    while (xb == 0.0) plastic.update(L, 0.0, dt, b, xb, suB, r);
+    EXPECT_NEAR(suA, m.strength(gdot, 0.0), 1e-9*m.s_uo);
+    EXPECT_LT(suB, 1.1*m.s_uo);
+    EXPECT_GT(xb/dt, 0.0);
 }
 
 TEST(UndrainedClay, SofteningCurveFollowsEquation1)
