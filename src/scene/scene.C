@@ -289,5 +289,30 @@ Dictionary readMethodDict(const std::string& caseDir, const std::string& name)
     return Dictionary::readFile(path);
 }
 
+std::string Scene::describe() const
+{
+    std::ostringstream os;
+    os << "Scene: " << title << '\n'
+       << "    slide  " << slide.length << " m x " << slide.height << " m, rho' " << slide.density << " kg/m3"
+       << (slide.rearWall ? ", held by a rear wall" : "") << '\n'
+       << "    Eq. (1): s_uo " << rheology.s_uo << " Pa, eta " << rheology.eta << ", n " << rheology.n
+       << ", gdotRef " << rheology.gdotRef << " 1/s, deltaRem " << rheology.deltaRem;
+    if (rheology.deltaRem < 1.0) os << ", xi95 " << rheology.xi95;
+    os << "\n    base   " << (base.isPlanar() ? "planar" : "polyline") << ", interface " << interface.typeName();
+    if (interface.type == Interface::Type::frictional) os << ", s_b " << interface.s_b << " Pa";
+    if (interface.type == Interface::Type::hydroplaning) os << ", C_F " << interface.C_F;
+    return os.str();
+}
+
+std::string readSetting(const Dictionary& dict, const std::string& overrideSetting,
+                        const std::vector<std::string>& allowed, const std::string& deflt)
+{
+    if (overrideSetting.empty()) return dict.getWordOneOf("setting", allowed, deflt);
+    for (const std::string& a : allowed) if (a == overrideSetting) return a;
+    std::string list;
+    for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+    throw InputError("-setting", 0, "setting", "'" + overrideSetting + "' is not one of: " + list);
+}
+
 } // namespace scene
 } // namespace slide

@@ -18,21 +18,12 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from slidefoam_io import read_summary, read_runout  # noqa: E402
 from runner import slidefoam_env, which  # noqa: E402
+from paper import paper_table  # noqa: E402
 
 
-def paper_table():
-    """Paper values, from the comments the case generator wrote from table1.csv."""
-    rows = {}
-    for c in range(1, 14):
-        text = open(os.path.join(top, "tutorials", "table1", "case%02d" % c, "constant", "sceneProperties")).read()
-        line = [l for l in text.splitlines() if l.startswith("// Paper:")][0]
-        mech, _, runs = line[len("// Paper: "):].partition("; runout ")
-        dam = None
-        for part in runs.split(", "):
-            if part.startswith("DAM "):
-                dam = float(part.split()[1])
-        rows[c] = (mech, dam)
-    return rows
+def paper_dam():
+    """(mechanism, the paper's DAM runout) per case."""
+    return {c: (mech, vals.get("DAM")) for c, (mech, vals) in paper_table().items()}
 
 
 def main():
@@ -40,7 +31,7 @@ def main():
     ap.add_argument("--columns", type=int, default=800)
     ap.add_argument("--setting", default="fast", choices=["fast", "reference"])
     args = ap.parse_args()
-    paper = paper_table()
+    paper = paper_dam()
     paper[9.5] = ("block sliding over-predicted by the original algorithm (~350 m at 20 s)", None)
     work = tempfile.mkdtemp(prefix="slideDAM_table1_")
     results = []

@@ -20,25 +20,7 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from slidefoam_io import read_summary, read_runout  # noqa: E402
 from runner import slidefoam_env, which  # noqa: E402
-
-
-def paper_table():
-    """Paper values, from the comments the case generator wrote from table1.csv."""
-    rows = {}
-    for c in range(1, 14):
-        text = open(os.path.join(top, "tutorials", "table1", "case%02d" % c, "constant", "sceneProperties")).read()
-        line = [l for l in text.splitlines() if l.startswith("// Paper:")][0]
-        mech, _, runs = line[len("// Paper: "):].partition("; runout ")
-        vals = {}
-        for part in runs.split(", "):
-            bits = part.split()
-            if len(bits) >= 2 and bits[0] in ("DAM", "MPM", "CFD"):
-                try:
-                    vals[bits[0]] = float(bits[1])
-                except ValueError:
-                    pass
-        rows[c] = (mech, vals)
-    return rows
+from paper import paper_table  # noqa: E402
 
 
 def run_case(c, cells, ppc, work):

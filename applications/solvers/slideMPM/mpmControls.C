@@ -1,5 +1,7 @@
 #include "mpmControls.H"
 
+#include "scene.H"
+
 #include <sstream>
 
 namespace slide
@@ -12,12 +14,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "youngsModulusRatio",
                       "poissonRatio", "volumetricLocking", "transfer", "strainRate", "writeFields", "progressInterval"});
     MpmControls c;
-    c.setting = overrideSetting.empty() ? d.getWordOneOf("setting", {"reference", "fast"}, "reference")
-                                        : overrideSetting;
-    if (c.setting != "reference" && c.setting != "fast")
-    {
-        throw scene::InputError("-setting", 0, "setting", "'" + c.setting + "' is not one of: reference, fast");
-    }
+    c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
     if (c.setting == "fast")
     {
         // Measured against finer runs in validation/mpm (README there).

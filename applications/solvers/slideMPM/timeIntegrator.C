@@ -32,11 +32,10 @@ struct GridToParticle
 
     KOKKOS_INLINE_FUNCTION void operator()(const int p, value_type s) const
     {
-        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
-        int bx, by;
-        double wx[3], dwx[3], wy[3], dwy[3];
-        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
-        QuadraticBSpline::evaluate(yg, by, wy, dwy);
+        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
+        const int bx = st.bx, by = st.by;
+        const double xg = st.xg, yg = st.yg;
+        const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
         double vx = 0.0, vy = 0.0, B00 = 0.0, B01 = 0.0, B10 = 0.0, B11 = 0.0;
         double L00 = 0.0, L01 = 0.0, L10 = 0.0, L11 = 0.0;
         for (int a = 0; a < 3; ++a)
@@ -161,11 +160,10 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         auto acc = scatter.access();
-        const double xg = (x(p, 0) - xOrigin)/d - i0, yg = x(p, 1)/d - j0;
-        int bx, by;
-        double wx[3], dwx[3], wy[3], dwy[3];
-        QuadraticBSpline::evaluate(xg, bx, wx, dwx);
-        QuadraticBSpline::evaluate(yg, by, wy, dwy);
+        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
+        const int bx = st.bx, by = st.by;
+        const double xg = st.xg, yg = st.yg;
+        const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
         const double mp_ = m(p), Vp = V(p), invD = 1.0/d;
         double sxx = sig(p, 0), syy = sig(p, 1);
         const double sxy = sig(p, 3);
@@ -173,7 +171,7 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         {
             // B-bar: the force sees the cell's mean pressure, as the stress update
             // sees the cell's mean dilatation, so the two stay work-conjugate.
-            const int ci = static_cast<int>(std::floor(xg)), cj = static_cast<int>(std::floor(yg));
+            const int ci = st.cellX(), cj = st.cellY();
             const double shift = -(sxx + syy + sig(p, 2))/3.0 - avg(ci, cj, 0)/avg(ci, cj, 1);
             sxx += shift;
             syy += shift;
@@ -216,8 +214,8 @@ void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGri
     Kokkos::parallel_for("pressureToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         auto acc = scatter.access();
-        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
-        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
+        const int i = st.cellX(), j = st.cellY();
         acc(i, j, 0) += -V(p)*(sig(p, 0) + sig(p, 1) + sig(p, 2))/3.0;
         acc(i, j, 1) += V(p);
     });
@@ -357,16 +355,16 @@ void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid)
     Kokkos::parallel_for("dilatationToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         auto acc = scatter.access();
-        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
-        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
+        const int i = st.cellX(), j = st.cellY();
         acc(i, j, 0) += V(p)*(L(p, 0) + L(p, 3));
         acc(i, j, 1) += V(p);
     });
     Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
     Kokkos::parallel_for("dilatationFromCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
-        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
-        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
+        const int i = st.cellX(), j = st.cellY();
         dil(p) = avg(i, j, 0)/avg(i, j, 1);
     });
 }

@@ -1,5 +1,7 @@
 #include "damControls.H"
 
+#include "scene.H"
+
 #include <sstream>
 
 namespace slide
@@ -13,12 +15,7 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
                       "minShearLayerFraction", "viscosityQuadratic", "viscosityLinear", "writeFields",
                       "progressInterval"});
     DamControls c;
-    c.setting = overrideSetting.empty() ? d.getWordOneOf("setting", {"reference", "fast"}, "reference")
-                                        : overrideSetting;
-    if (c.setting != "reference" && c.setting != "fast")
-    {
-        throw scene::InputError("-setting", 0, "setting", "'" + c.setting + "' is not one of: reference, fast");
-    }
+    c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
     if (c.setting == "fast")
     {
         // Measured against the reference in validation/dam: see README there.

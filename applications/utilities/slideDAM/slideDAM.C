@@ -44,17 +44,7 @@ int main(int argc, char** argv)
                                 "columns");
         }
 
-        std::cout << "Scene: " << sc.title << '\n'
-                  << "    slide  " << sc.slide.length << " m x " << sc.slide.height << " m, rho' " << sc.slide.density
-                  << " kg/m3" << (sc.slide.rearWall ? ", held by a rear wall" : "") << '\n'
-                  << "    Eq. (1): s_uo " << sc.rheology.s_uo << " Pa, eta " << sc.rheology.eta << ", n "
-                  << sc.rheology.n << ", gdotRef " << sc.rheology.gdotRef << " 1/s, deltaRem " << sc.rheology.deltaRem;
-        if (sc.rheology.deltaRem < 1.0) std::cout << ", xi95 " << sc.rheology.xi95;
-        std::cout << '\n'
-                  << "    base   " << (sc.base.isPlanar() ? "planar" : "polyline") << ", interface "
-                  << sc.interface.typeName();
-        if (sc.interface.type == scene::Interface::Type::frictional) std::cout << ", s_b " << sc.interface.s_b << " Pa";
-        if (sc.interface.type == scene::Interface::Type::hydroplaning) std::cout << ", C_F " << sc.interface.C_F;
+        std::cout << sc.describe();
         std::cout << "\nNumerics: " << controls.describe() << "\n" << std::endl;
 
         dam::SlideColumns slide = dam::SlideColumns::fromScene(sc, controls.columns);

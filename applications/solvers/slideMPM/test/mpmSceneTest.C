@@ -3,6 +3,7 @@
 // under gravity against the analytical one (and what the B-bar changes at
 // nu = 0.49), no penetration of the base, and a stable slide that stays.
 #include "backgroundGrid.H"
+#include "blockScene.H"
 #include "baseFrame.H"
 #include "materialPoints.H"
 #include "mpmControls.H"
@@ -18,22 +19,7 @@ using namespace slide;
 namespace
 {
 
-scene::Scene blockScene(double angleDeg, double L, double H, double rho, double s_uo, scene::Interface iface)
-{
-    scene::Scene sc;
-    sc.caseName = "test";
-    sc.slide.shape = scene::SlideGeometry::Shape::rectangle;
-    sc.slide.length = L;
-    sc.slide.height = H;
-    sc.slide.density = rho;
-    sc.rheology.s_uo = s_uo;
-    sc.rheology.eta = 0.0;
-    sc.rheology.deltaRem = 1.0;
-    sc.base = scene::BaseProfile::planar(angleDeg);
-    sc.interface = iface;
-    sc.g = 9.81;
-    return sc;
-}
+using scene::blockScene;
 
 struct SceneRun
 {

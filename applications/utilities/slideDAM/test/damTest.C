@@ -5,6 +5,7 @@
 #include "damIntegrator.H"
 #include "slideColumns.H"
 #include "lubricationReference.H"
+#include "blockScene.H"
 
 #include <gtest/gtest.h>
 
@@ -16,23 +17,10 @@ using namespace slide;
 namespace
 {
 
+// The DAM tests' block: 40 m x 2 m, rho' 500 kg/m3.
 scene::Scene blockScene(double angleDeg, double s_uo, scene::Interface iface)
 {
-    scene::Scene sc;
-    sc.caseName = "test";
-    sc.slide.shape = scene::SlideGeometry::Shape::rectangle;
-    sc.slide.length = 40.0;
-    sc.slide.height = 2.0;
-    sc.slide.density = 500.0;
-    sc.rheology.s_uo = s_uo;
-    sc.rheology.eta = 0.0;
-    sc.rheology.deltaRem = 1.0;
-    sc.base = scene::BaseProfile::planar(angleDeg);
-    sc.interface = iface;
-    sc.g = 9.81;
-    sc.control.endTime = 20.0;
-    sc.control.writeInterval = 1.0;
-    return sc;
+    return scene::blockScene(angleDeg, 40.0, 2.0, 500.0, s_uo, iface);
 }
 
 dam::DamControls fast(int columns = 100)
