@@ -1,4 +1,7 @@
 #include "materialPoints.H"
+#include "backgroundGrid.H"
+
+#include <Kokkos_Sort.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +28,37 @@ void MaterialPoints::allocate(const int n)
     shearStrainRate = ParticleScalar("shearStrainRate", n);
     plasticShearStrainRate = ParticleScalar("plasticShearStrainRate", n);
     dilatation = ParticleScalar("dilatation", n);
+}
+
+void MaterialPoints::sortByCell(const BackgroundGrid& grid)
+{
+    using KeyView = Kokkos::View<int*, MemorySpace>;
+    KeyView keys("cellKeys", count);
+    const auto x = position;
+    const double d = grid.d, xOrigin = grid.xOrigin;
+    const int i0 = grid.i0, j0 = grid.j0, nj = grid.nj;
+    Kokkos::parallel_for("cellKeys", Kokkos::RangePolicy<ExecutionSpace>(0, count), KOKKOS_LAMBDA(const int p)
+    {
+        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
+        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        keys(p) = i*nj + j;
+    });
+    const int nBins = grid.ni*grid.nj;
+    using Op = Kokkos::BinOp1D<KeyView>;
+    Kokkos::BinSort<KeyView, Op> sorter(keys, Op(nBins, 0, nBins - 1), false);
+    sorter.create_permute_vector();
+    sorter.sort(position);
+    sorter.sort(velocity);
+    sorter.sort(affine);
+    sorter.sort(velocityGradient);
+    sorter.sort(stress);
+    sorter.sort(mass);
+    sorter.sort(volume);
+    sorter.sort(plasticShearStrain);
+    sorter.sort(strength);
+    sorter.sort(shearStrainRate);
+    sorter.sort(plasticShearStrainRate);
+    sorter.sort(dilatation);
 }
 
 long long MaterialPoints::estimateCount(const scene::Scene& sc, const double d, const int ppc)

@@ -150,6 +150,7 @@ int main(int argc, char** argv)
                    << "than is free";
                 throw output::BlowUp(t, "the particle cloud", "grid extent", os.str());
             }
+            if (step > 0 && step % mpm::sortInterval == 0) points.sortByCell(grid);
             double dt = integrator.stableTimeStep(d, stats.maxSpeed);
             const double target = std::min(nextWrite, rc.endTime);
             bool landing = false;

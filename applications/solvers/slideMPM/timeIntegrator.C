@@ -431,12 +431,14 @@ StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, co
 void advanceTo(const TimeIntegrator& integrator, MaterialPoints& mp, BackgroundGrid& grid, double& t, const double T,
                StepStatistics& stats)
 {
+    long long steps = 0;
     while (t < T - 1e-12*std::max(1.0, T))
     {
         if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, 8ull << 30))
         {
             throw std::runtime_error("advanceTo: the grid outgrew 8 GiB");
         }
+        if (++steps % sortInterval == 0) mp.sortByCell(grid);
         const double dt = std::min(integrator.stableTimeStep(grid.d, stats.maxSpeed), T - t);
         stats = integrator.step(mp, grid, dt);
         t += dt;
