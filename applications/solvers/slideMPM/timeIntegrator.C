@@ -138,7 +138,7 @@ StepStatistics TimeIntegrator::statistics(const MaterialPoints& mp)
     return toStatistics(r);
 }
 
-void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& grid) const
+void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
 {
     // contribute() adds into the view (the duplicates on OpenMP, the view itself
     // with CUDA atomics): both are zeroed first.
@@ -178,7 +178,8 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         }
         const double vx = v(p, 0), vy = v(p, 1);
         const double C00 = C(p, 0)*d, C01 = C(p, 1)*d, C10 = C(p, 2)*d, C11 = C(p, 3)*d;
-        const double Sxx = Vp*sxx*invD, Syy = Vp*syy*invD, Sxy = Vp*sxy*invD;
+        const double Sxx = dt*Vp*sxx*invD, Syy = dt*Vp*syy*invD, Sxy = dt*Vp*sxy*invD;
+        const double mx = mp_*(vx + dt*gX), my = mp_*(vy + dt*gY);   // momentum with gravity's impulse
         for (int a = 0; a < 3; ++a)
         {
             const double dx = bx + a - xg;   // node - particle, in cells
@@ -190,10 +191,8 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
                 const double mw = mp_*w;
                 const int i = bx + a, j = by + b;
                 acc(i, j, BackgroundGrid::mass) += mw;
-                acc(i, j, BackgroundGrid::momentumX) += mw*(vx + C00*dx + C01*dy);
-                acc(i, j, BackgroundGrid::momentumY) += mw*(vy + C10*dx + C11*dy);
-                acc(i, j, BackgroundGrid::forceX) += mw*gX - (Sxx*gx + Sxy*gy);
-                acc(i, j, BackgroundGrid::forceY) += mw*gY - (Sxy*gx + Syy*gy);
+                acc(i, j, BackgroundGrid::momentumX) += w*mx + mw*(C00*dx + C01*dy) - (Sxx*gx + Sxy*gy);
+                acc(i, j, BackgroundGrid::momentumY) += w*my + mw*(C10*dx + C11*dy) - (Sxy*gx + Syy*gy);
                 acc(i, j, BackgroundGrid::volume) += Vp*w;
             }
         }
@@ -252,8 +251,8 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
             double vx = 0.0, vy = 0.0;
             if (m > 0.0)
             {
-                vx = (nodal(i, j, BackgroundGrid::momentumX) + dt*nodal(i, j, BackgroundGrid::forceX))/m;
-                vy = (nodal(i, j, BackgroundGrid::momentumY) + dt*nodal(i, j, BackgroundGrid::forceY))/m;
+                vx = nodal(i, j, BackgroundGrid::momentumX)/m;
+                vy = nodal(i, j, BackgroundGrid::momentumY)/m;
             }
             const double offset = (yb - (j0 + j)*d)/d;   // how far the node lies below the base, in cells
             if (offset >= -1e-9 && offset < 1.5 && nc < BasalContact::maxNodes)
@@ -420,7 +419,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
 
 StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
 {
-    particleToGrid(mp, grid);
+    particleToGrid(mp, grid, dt);
     updateGrid(grid, dt);
     const StepStatistics s = gridToParticle(mp, grid, dt);
     averageDilatation(mp, grid);
