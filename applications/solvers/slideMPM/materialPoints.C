@@ -1,5 +1,6 @@
 #include "materialPoints.H"
 #include "backgroundGrid.H"
+#include "quadraticBSpline.H"
 
 #include <Kokkos_Sort.hpp>
 
@@ -39,8 +40,8 @@ void MaterialPoints::sortByCell(const BackgroundGrid& grid)
     const int i0 = grid.i0, j0 = grid.j0, nj = grid.nj;
     Kokkos::parallel_for("cellKeys", Kokkos::RangePolicy<ExecutionSpace>(0, count), KOKKOS_LAMBDA(const int p)
     {
-        const int i = static_cast<int>(std::floor((x(p, 0) - xOrigin)/d)) - i0;
-        const int j = static_cast<int>(std::floor(x(p, 1)/d)) - j0;
+        int i, j;
+        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
         keys(p) = i*nj + j;
     });
     const int nBins = grid.ni*grid.nj;

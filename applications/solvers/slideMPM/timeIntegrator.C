@@ -213,8 +213,8 @@ void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGri
     Kokkos::parallel_for("pressureToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         auto acc = scatter.access();
-        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
-        const int i = st.cellX(), j = st.cellY();
+        int i, j;
+        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
         acc(i, j, 0) += -V(p)*(sig(p, 0) + sig(p, 1) + sig(p, 2))/3.0;
         acc(i, j, 1) += V(p);
     });
@@ -354,16 +354,16 @@ void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid)
     Kokkos::parallel_for("dilatationToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         auto acc = scatter.access();
-        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
-        const int i = st.cellX(), j = st.cellY();
+        int i, j;
+        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
         acc(i, j, 0) += V(p)*(L(p, 0) + L(p, 3));
         acc(i, j, 1) += V(p);
     });
     Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
     Kokkos::parallel_for("dilatationFromCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
-        const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
-        const int i = st.cellX(), j = st.cellY();
+        int i, j;
+        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
         dil(p) = avg(i, j, 0)/avg(i, j, 1);
     });
 }
