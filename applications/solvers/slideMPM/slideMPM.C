@@ -96,7 +96,6 @@ int main(int argc, char** argv)
                   << integrator.waveSpeed() << " m/s, dt " << integrator.stableTimeStep(d, 0.0) << " s\n"
                   << "Backend: " << backend << "\n" << std::endl;
 
-        const double rho = sc.slide.density;
         mpm::HostPoints initial(points);
         const double initialFront = frame.level.arcLength(initial.frontX());
         const double initialMass = initial.totalMass();
@@ -255,7 +254,6 @@ int main(int argc, char** argv)
                   << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
                   << summary.wallTime << " s, " << step*static_cast<double>(points.count)/summary.wallTime
                   << " particle-updates/s on " << backend << "\nEnd\n" << std::endl;
-        (void)rho;
         return 0;
     });
 }
