@@ -15,6 +15,7 @@
 #include "mpmControls.H"
 #include "mpmOutput.H"
 #include "outputContract.H"
+#include "writeSchedule.H"
 #include "scene.H"
 #include "timeIntegrator.H"
 
@@ -127,8 +128,7 @@ int main(int argc, char** argv)
         const scene::RunControl& rc = sc.control;
         double t = rc.startTime;
         long long step = 0;
-        long long writeIndex = 1;
-        double nextWrite = rc.startTime + rc.writeInterval;
+        output::WriteSchedule schedule(rc);
         output::Progress progress(rc.startTime, rc.endTime, controls.progressInterval);
         write(t);
         progress.report(t, step, true, "front = 0 m");
@@ -137,9 +137,8 @@ int main(int argc, char** argv)
             ? output::availableMemoryBytes()/2 : 8ull << 30;
 
         bool atRest = false;
-        const double eps = 1e-9*std::max(1.0, rc.endTime);
         std::vector<std::pair<double, std::string>> mechanisms;
-        while (t < rc.endTime - eps)
+        while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
             {
@@ -150,17 +149,10 @@ int main(int argc, char** argv)
                 throw output::BlowUp(t, "the particle cloud", "grid extent", os.str());
             }
             if (step > 0 && step % mpm::sortInterval == 0) points.sortByCell(grid);
-            double dt = integrator.stableTimeStep(d, stats.maxSpeed);
-            const double target = std::min(nextWrite, rc.endTime);
-            bool landing = false;
-            if (t + dt >= target - eps)
-            {
-                dt = target - t;
-                landing = true;
-            }
-            const mpm::StepStatistics next = integrator.step(points, grid, dt);
+            const output::WriteSchedule::Step s = schedule.clip(t, integrator.stableTimeStep(d, stats.maxSpeed));
+            const mpm::StepStatistics next = integrator.step(points, grid, s.dt);
             ++step;
-            t = landing ? target : t + dt;
+            t = s.time;
 
             // Runaway: faster than a fall from the highest start point to the lowest
             // point reached could make it, with a factor 2 of margin.
@@ -188,20 +180,19 @@ int main(int argc, char** argv)
                 progress.report(t, step, true, "all particles at rest");
                 break;
             }
-            if (landing && t >= nextWrite - eps)
+            if (schedule.writeDue(s))
             {
                 const mpm::HostPoints hp = write(t);
                 mechanisms.emplace_back(t, mpm::detectMechanism(hp, frame, H0, sc.g, d).name);
-                ++writeIndex;
-                nextWrite = rc.startTime + writeIndex*rc.writeInterval;
+                schedule.next();
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << last.front << " m  U_front = " << last.frontVelocity
                       << " m/s  |U|max = " << last.maxVelocity << " m/s";
                 progress.report(t, step, true, extra.str());
             }
-            else if (landing && t >= rc.endTime - eps)
+            else if (s.landing)
             {
-                write(t);
+                write(t);   // the end time
             }
             else
             {

@@ -12,6 +12,7 @@
 #include "damIntegrator.H"
 #include "damOutput.H"
 #include "outputContract.H"
+#include "writeSchedule.H"
 #include "scene.H"
 #include "slideColumns.H"
 
@@ -78,32 +79,25 @@ int main(int argc, char** argv)
         const scene::RunControl& rc = sc.control;
         double t = rc.startTime;
         long long step = 0;
-        long long writeIndex = 1;
-        double nextWrite = rc.startTime + rc.writeInterval;
+        output::WriteSchedule schedule(rc);
         output::Progress progress(rc.startTime, rc.endTime, controls.progressInterval);
         write(t);
         progress.report(t, step, true, "front = 0 m");
 
         bool atRest = false;
-        const double eps = 1e-9*std::max(1.0, rc.endTime);
-        while (t < rc.endTime - eps)
+        while (schedule.running(t))
         {
-            double dt = integrator.timeStep(slide);
-            if (!(dt > 1e-9*rc.writeInterval))
+            const double dtStable = integrator.timeStep(slide);
+            if (!(dtStable > 1e-9*rc.writeInterval))
             {
-                throw output::BlowUp(t, "the slide", "time step",
-                                     [&] { std::ostringstream os; os << "the stable time step collapsed to " << dt << " s"; return os.str(); }());
+                std::ostringstream os;
+                os << "the stable time step collapsed to " << dtStable << " s";
+                throw output::BlowUp(t, "the slide", "time step", os.str());
             }
-            const double target = std::min(nextWrite, rc.endTime);
-            bool landing = false;
-            if (t + dt >= target - eps)
-            {
-                dt = target - t;
-                landing = true;
-            }
-            integrator.step(slide, dt, t);
+            const output::WriteSchedule::Step s = schedule.clip(t, dtStable);
+            integrator.step(slide, s.dt, t);
             ++step;
-            t = landing ? target : t + dt;
+            t = s.time;
 
             if (rc.stopAtRest && dam::DamIntegrator::atRest(slide, rc.restVelocity))
             {
@@ -112,19 +106,18 @@ int main(int argc, char** argv)
                 progress.report(t, step, true, "all columns at rest");
                 break;
             }
-            if (landing && t >= nextWrite - eps)
+            if (schedule.writeDue(s))
             {
                 write(t);
-                ++writeIndex;
-                nextWrite = rc.startTime + writeIndex*rc.writeInterval;
+                schedule.next();
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << slide.front() << " m  U_front = " << slide.U.back()
                       << " m/s";
                 progress.report(t, step, true, extra.str());
             }
-            else if (landing && t >= rc.endTime - eps)
+            else if (s.landing)
             {
-                write(t);
+                write(t);   // the end time
             }
             else
             {
