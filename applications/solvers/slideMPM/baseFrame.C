@@ -8,6 +8,18 @@ namespace slide
 namespace mpm
 {
 
+BasalContact basalContact(const scene::Interface& in)
+{
+    BasalContact c;
+    c.type = in.type == scene::Interface::Type::noSlip ? BasalContact::Type::noSlip
+           : in.type == scene::Interface::Type::frictional ? BasalContact::Type::frictional
+           : BasalContact::Type::hydroplaning;
+    c.s_b = in.s_b;
+    c.rhoWater = in.rhoWater;
+    c.C_F = in.C_F;
+    return c;
+}
+
 BaseFrame BaseFrame::fromScene(const scene::Scene& sc)
 {
     BaseFrame f;

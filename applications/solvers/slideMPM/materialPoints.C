@@ -170,11 +170,7 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
         double s[4] = {K0*hs[p], hs[p], K0*hs[p], 0.0};
         const double tau = UndrainedClay::shearStress(s);
         const double suo = clay.strength.strength(0.0, 0.0);
-        if (tau > suo)
-        {
-            const double pm = (s[0] + s[1] + s[2])/3.0, r = suo/tau;
-            for (int c = 0; c < 3; ++c) s[c] = pm + r*(s[c] - pm);
-        }
+        if (tau > suo) UndrainedClay::returnToYieldSurface(s, tau, suo);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         su(p) = suo;
     }

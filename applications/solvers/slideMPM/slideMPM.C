@@ -30,21 +30,6 @@ using namespace slide;
 namespace
 {
 
-mpm::BasalContact contactOf(const scene::Interface& in)
-{
-    mpm::BasalContact c;
-    switch (in.type)
-    {
-        case scene::Interface::Type::noSlip: c.type = mpm::BasalContact::Type::noSlip; break;
-        case scene::Interface::Type::frictional: c.type = mpm::BasalContact::Type::frictional; break;
-        case scene::Interface::Type::hydroplaning: c.type = mpm::BasalContact::Type::hydroplaning; break;
-    }
-    c.s_b = in.s_b;
-    c.rhoWater = in.rhoWater;
-    c.C_F = in.C_F;
-    return c;
-}
-
 std::string backendName()
 {
     std::ostringstream os;
@@ -88,7 +73,7 @@ int main(int argc, char** argv)
             controls.plasticStrainRate);
         mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc);
         mpm::BackgroundGrid grid(d, frame.rearX);
-        const mpm::TimeIntegrator integrator(frame, clay, contactOf(sc.interface), controls, sc.slide.density);
+        const mpm::TimeIntegrator integrator(frame, clay, mpm::basalContact(sc.interface), controls, sc.slide.density);
 
         const std::string backend = backendName();
         std::cout << sc.describe();

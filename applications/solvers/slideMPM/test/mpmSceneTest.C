@@ -40,21 +40,9 @@ struct SceneRun
         points(mpm::MaterialPoints::seed(s, frame, clay, c.poissonRatio, s.slide.height/c.cellsPerHeight,
                                          c.particlesPerCell, geostatic)),
         grid(s.slide.height/c.cellsPerHeight, frame.rearX),
-        integrator(frame, clay, contactOf(s.interface), c, s.slide.density),
+        integrator(frame, clay, mpm::basalContact(s.interface), c, s.slide.density),
         stats(mpm::TimeIntegrator::statistics(points))
     {}
-
-    static mpm::BasalContact contactOf(const scene::Interface& in)
-    {
-        mpm::BasalContact b;
-        b.type = in.type == scene::Interface::Type::noSlip ? mpm::BasalContact::Type::noSlip
-               : in.type == scene::Interface::Type::frictional ? mpm::BasalContact::Type::frictional
-               : mpm::BasalContact::Type::hydroplaning;
-        b.s_b = in.s_b;
-        b.rhoWater = in.rhoWater;
-        b.C_F = in.C_F;
-        return b;
-    }
 
     void advance(double T) { mpm::advanceTo(integrator, points, grid, t, T, stats); }
 };
