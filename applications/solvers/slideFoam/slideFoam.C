@@ -55,8 +55,12 @@ Description
 #include "CorrectPhi.H"
 #include "fvcSmooth.H"
 
-#include "HerschelBulkleyRemoulding.H"
-#include "checkParameters.H"
+#include "upwind.H"
+
+#include "slideSceneObject.H"
+#include "slideRheology.H"
+#include "slideRunout.H"
+#include "outputContract.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -75,11 +79,19 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+
+    // Nothing from an earlier run may claim a runout this run has not produced.
+    if (Pstream::master())
+    {
+        slide::output::prepareOutput(runTime.globalPath(), "slideFoam");
+    }
+    #include "readSlideRheology.H"
+
     #include "createDynamicFvMesh.H"
     #include "initContinuityErrs.H"
     #include "createDyMControls.H"
     #include "createFields.H"
-    #include "readSlideRheology.H"
+    #include "createSlideControls.H"
     #include "createAlphaFluxes.H"
     #include "initCorrectPhi.H"
     #include "createUfIfPresent.H"
@@ -180,10 +192,32 @@ int main(int argc, char *argv[])
             }
         }
 
+        #include "xiEqn.H"
+        #include "checkBlowUp.H"
+
         runTime.write();
+        runout.execute();
 
         runTime.printExecutionTime(Info);
+
+        if (runout.state().atDomainEnd)
+        {
+            FatalErrorInFunction
+                << "the slide's front reached the downslope end of the mesh at time "
+                << runTime.timeName() << " s: its runout would be cut short. Give a longer"
+                << " reach in system/cfdDict and regenerate the case (slideFoamCase)."
+                << exit(FatalError);
+        }
+        if (scene.control.stopAtRest && runout.atRest())
+        {
+            Info<< "The slide is at rest (every slide cell slower than "
+                << scene.control.restVelocity << " m/s at two successive writes)" << nl << endl;
+            atRest = true;
+            break;
+        }
     }
+
+    runout.writeSummary(runTime.elapsedClockTime(), atRest);
 
     Info<< "End\n" << endl;
 

@@ -297,3 +297,26 @@ TEST(CheckParameters, RejectsBadValuesNamingTheKey)
         EXPECT_FALSE(p.message.empty());
     }
 }
+
+TEST(PlasticShearRate, OnlyYieldedMaterialAccumulatesStrain)
+{
+    const HerschelBulkleyRemoulding m = case10();
+    ViscosityRegularisation reg;
+    reg.type = Regularisation::cap;
+    reg.muMax = 1e4;
+    // The cap binds below gdot_c where s_u(gdot_c) = muMax gdot_c: found by bisection.
+    double lo = 0.0, hi = 10.0;
+    for (int i = 0; i < 200; ++i)
+    {
+        const double mid = 0.5*(lo + hi);
+        (m.strength(mid, 0.0) < reg.muMax*mid ? hi : lo) = mid;
+    }
+    EXPECT_EQ(plasticShearRate(m, 0.999*lo, 0.0, reg), 0.0);
+    EXPECT_DOUBLE_EQ(plasticShearRate(m, 1.001*hi, 0.0, reg), 1.001*hi);
+    EXPECT_DOUBLE_EQ(plasticShearRate(m, -2.0, 0.0, reg), 2.0);
+    // Papanastasiou: yielded once the weight is within 5 % of 1.
+    reg.type = Regularisation::papanastasiou;
+    reg.m = 100.0;
+    EXPECT_EQ(plasticShearRate(m, 0.029, 0.0, reg), 0.0);
+    EXPECT_DOUBLE_EQ(plasticShearRate(m, 0.031, 0.0, reg), 0.031);
+}

@@ -1,0 +1,60 @@
+#include "cfdControls.H"
+
+#include <sstream>
+
+namespace slide
+{
+namespace cfd
+{
+
+CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
+{
+    d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
+                      "regularisation", "plugCreepRate", "processors"});
+    CfdControls c;
+    c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
+    c.cellsPerHeight = c.setting == "reference" ? 60 : 20;
+    if (d.found("cellsPerHeight"))
+    {
+        c.cellsPerHeight = d.getLabel("cellsPerHeight");
+        if (c.cellsPerHeight < 2 || c.cellsPerHeight > 2000)
+        {
+            d.fail("cellsPerHeight", "must lie in [2, 2000], got " + std::to_string(c.cellsPerHeight));
+        }
+    }
+    if (d.found("reach")) c.reach = d.getScalarInRange("reach", 0.0, 1e6, false, true, "reach ahead of the front [m]");
+    if (d.found("reachFactor"))
+    {
+        c.reachFactor = d.getScalarInRange("reachFactor", 1.0, 10.0, true, true, "reach factor");
+    }
+    if (d.found("behind")) c.behind = d.getScalarInRange("behind", 0.0, 1e6, true, true, "mesh behind the rear [m]");
+    if (d.found("heightRatio"))
+    {
+        c.heightRatio = d.getScalarInRange("heightRatio", 1.05, 100.0, true, true, "mesh height / H0");
+    }
+    if (d.found("regularisation")) c.regularisation = d.getWordOneOf("regularisation", {"cap", "papanastasiou"});
+    if (d.found("plugCreepRate"))
+    {
+        c.plugCreepRate = d.getScalarInRange("plugCreepRate", 0.0, 1e3, false, true, "plug creep rate [1/s]");
+    }
+    if (d.found("processors"))
+    {
+        c.processors = d.getLabel("processors");
+        if (c.processors < 1 || c.processors > 4096)
+        {
+            d.fail("processors", "must lie in [1, 4096], got " + std::to_string(c.processors));
+        }
+    }
+    return c;
+}
+
+std::string CfdControls::describe() const
+{
+    std::ostringstream os;
+    os << "setting " << setting << ", H0/" << cellsPerHeight << ", regularisation " << regularisation
+       << ", processors " << processors;
+    return os.str();
+}
+
+} // namespace cfd
+} // namespace slide

@@ -1,0 +1,364 @@
+// slideFoamCase: builds slideFoam's CFD case from the scene every method reads
+// (constant/sceneProperties, system/controlDict) and system/cfdDict, in the
+// same case directory, the OpenFOAM way:
+//   system/blockMeshDict    a 2D mesh along the planar base (x along the slope,
+//                           y normal to it), sized to the slide's reach
+//   system/setFieldsDict    the slide's initial extent (alpha.slide = 1)
+//   system/fvSchemes, fvSolution, decomposeParDict
+//   constant/g              gravity in the slope's frame
+//   constant/transportProperties, turbulenceProperties
+//   0.orig/                 alpha.slide, U, p_rgh, xi with the base condition
+//   <case>.foam             for ParaView's OpenFOAM reader
+// then: blockMesh; cp -r 0.orig 0; setFields; slideFoam (see the tutorials' Allrun).
+//
+//   slideFoamCase [-case dir] [-setting reference|fast]
+#include "application.H"
+#include "cfdControls.H"
+#include "outputContract.H"
+#include "scene.H"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <sys/stat.h>
+
+using namespace slide;
+
+namespace
+{
+
+const double pi = 3.14159265358979323846;
+
+std::string header(const std::string& cls, const std::string& object, const std::string& location = "")
+{
+    std::ostringstream os;
+    os << "/*--------------------------------*- C++ -*----------------------------------*\\\n"
+       << "  Written by slideFoamCase from constant/sceneProperties and system/cfdDict:\n"
+       << "  edit those and run slideFoamCase again rather than editing this file.\n"
+       << "\\*---------------------------------------------------------------------------*/\n"
+       << "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       " << cls << ";\n";
+    if (!location.empty()) os << "    location    \"" << location << "\";\n";
+    os << "    object      " << object << ";\n}\n\n";
+    return os.str();
+}
+
+void writeFile(const std::string& path, const std::string& text)
+{
+    std::ofstream os(path);
+    if (!os) throw std::runtime_error("cannot write " + path);
+    os << text;
+}
+
+// slideDAM's runout from an earlier run in the same case, or -1.
+double damRunout(const std::string& caseDir)
+{
+    std::ifstream is(caseDir + "/postProcessing/slideDAM/summary.json");
+    if (!is) return -1.0;
+    std::stringstream ss;
+    ss << is.rdbuf();
+    const std::string text = ss.str();
+    const std::string key = "\"runout_m\":";
+    const auto pos = text.find(key);
+    if (pos == std::string::npos) return -1.0;
+    return std::atof(text.c_str() + pos + key.size());
+}
+
+std::string num(double v)
+{
+    std::ostringstream os;
+    os << std::setprecision(10) << v;
+    return os.str();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    output::ArgList args(argc, argv, "slideFoamCase",
+        "Builds slideFoam's CFD case (mesh, fields, numerics) from the scene",
+        {{"setting", "name", "reference | fast (overrides system/cfdDict)"}});
+    return output::runGuarded("slideFoamCase", [&]()
+    {
+        args.printBanner();
+        const std::string caseDir = args.caseDir();
+        const scene::Scene sc = scene::Scene::read(caseDir);
+        const scene::Dictionary cfdDict = scene::readMethodDict(caseDir, "cfdDict");
+        const cfd::CfdControls c = cfd::CfdControls::read(cfdDict, args.get("setting"));
+        const std::string cfdFile = caseDir + "/system/cfdDict";
+
+        if (!sc.base.isPlanar())
+        {
+            throw scene::InputError(caseDir + "/" + scene::Scene::sceneFile(), 0, "base.profile",
+                                    "slideFoamCase meshes planar bases only so far; a polyline base runs with "
+                                    "slideDAM and slideMPM");
+        }
+        if (sc.slide.shape != scene::SlideGeometry::Shape::rectangle)
+        {
+            throw scene::InputError(caseDir + "/" + scene::Scene::sceneFile(), 0, "slide.shape",
+                                    "slideFoamCase sets up rectangular slides only so far");
+        }
+
+        const double H0 = sc.slide.height;
+        const double dx = H0/c.cellsPerHeight;
+        double reach = c.reach;
+        std::string reachFrom = "system/cfdDict reach";
+        if (reach <= 0.0)
+        {
+            const double dam = damRunout(caseDir);
+            if (dam < 0.0)
+            {
+                throw scene::InputError(cfdFile, 0, "reach",
+                                        "no reach given and no slideDAM result (postProcessing/slideDAM/summary.json) "
+                                        "to size the mesh from: give reach [m] or run slideDAM first");
+            }
+            reach = c.reachFactor*dam + 2.0*H0;
+            reachFrom = num(c.reachFactor) + " x slideDAM's runout " + num(dam) + " m + 2 H0";
+        }
+        const double behind = c.behind >= 0.0 ? c.behind : (sc.slide.rearWall ? 0.0 : H0);
+
+        // Cells aligned with the slide's rear so that its edges fall on cell faces where L0/dx is whole.
+        const int nBehind = int(std::ceil(behind/dx - 1e-9));
+        const int nSlide = int(std::ceil(sc.slide.length/dx - 1e-9));
+        const int nAhead = int(std::ceil(reach/dx - 1e-9));
+        const int nx = nBehind + nSlide + nAhead;
+        const int ny = int(std::ceil(c.heightRatio*c.cellsPerHeight - 1e-9));
+        const double x0 = sc.slide.rearPosition - nBehind*dx;
+        const double x1 = x0 + nx*dx;
+        const double y1 = ny*dx;
+        const double cells = double(nx)*ny;
+        output::checkMemory(static_cast<unsigned long long>(cells*2000.0), std::to_string(nx) + " x "
+                            + std::to_string(ny) + " cells", cfdFile, 0, "cellsPerHeight");
+
+        const bool water = sc.ambient.phase == scene::Ambient::Phase::water;
+        // In water the slide carries its full density and buoyancy comes from the
+        // water's pressure; in a light ambient the submerged density does both.
+        const double rhoSlide = sc.slide.density + (water ? sc.ambient.density : 0.0);
+        const double theta = sc.base.angle(0.0);
+        const double creep = c.plugCreepRate > 0.0 ? c.plugCreepRate : 1e-3*std::sqrt(sc.g/H0);
+        const double muMax = sc.rheology.strength(creep, 0.0)/creep;
+
+        std::cout << sc.describe() << "\nCFD set-up: " << c.describe() << "\n"
+                  << "  mesh " << nx << " x " << ny << " = " << long(cells) << " cells of " << dx << " m, x in ["
+                  << x0 << ", " << x1 << "] m along the base, height " << y1 << " m\n"
+                  << "  reach ahead of the front " << nAhead*dx << " m (" << reachFrom << ")\n"
+                  << "  slide density " << rhoSlide << " kg/m3 in a " << (water ? "water" : "light") << " ambient of "
+                  << sc.ambient.density << " kg/m3\n"
+                  << "  plug creep rate " << creep << " 1/s: " << (c.regularisation == "cap"
+                      ? "muMax = " + num(muMax) + " Pa s" : "m = " + num(1.0/creep) + " s") << "\n" << std::endl;
+
+        mkdir((caseDir + "/0.orig").c_str(), 0755);
+        const std::string rearPatchType = sc.slide.rearWall ? "wall" : "patch";
+
+        // --- mesh
+        {
+            std::ostringstream os;
+            os << header("dictionary", "blockMeshDict", "system") << "scale 1;\n\nvertices\n(\n";
+            const double z = dx;
+            for (double zz : {0.0, z})
+            {
+                os << "    (" << num(x0) << " 0 " << num(zz) << ")\n    (" << num(x1) << " 0 " << num(zz) << ")\n"
+                   << "    (" << num(x1) << " " << num(y1) << " " << num(zz) << ")\n    (" << num(x0) << " "
+                   << num(y1) << " " << num(zz) << ")\n";
+            }
+            os << ");\n\nblocks\n(\n    hex (0 1 2 3 4 5 6 7) (" << nx << " " << ny << " 1) simpleGrading (1 1 1)\n);\n\n"
+               << "edges\n(\n);\n\nboundary\n(\n"
+               << "    base\n    {\n        type wall;\n        faces ((0 1 5 4));\n    }\n"
+               << "    top\n    {\n        type patch;\n        faces ((3 7 6 2));\n    }\n"
+               << "    upslope\n    {\n        type " << rearPatchType << ";\n        faces ((0 4 7 3));\n    }\n"
+               << "    downslope\n    {\n        type patch;\n        faces ((1 2 6 5));\n    }\n"
+               << "    frontAndBack\n    {\n        type empty;\n        faces ((0 3 2 1) (4 5 6 7));\n    }\n"
+               << ");\n";
+            writeFile(caseDir + "/system/blockMeshDict", os.str());
+        }
+        {
+            std::ostringstream os;
+            os << header("dictionary", "setFieldsDict", "system")
+               << "defaultFieldValues\n(\n    volScalarFieldValue alpha.slide 0\n);\n\nregions\n(\n"
+               << "    boxToCell\n    {\n        box (" << num(sc.slide.rearPosition) << " 0 -1) ("
+               << num(sc.slide.frontPosition()) << " " << num(H0) << " 1);\n"
+               << "        fieldValues\n        (\n            volScalarFieldValue alpha.slide 1\n        );\n    }\n);\n";
+            writeFile(caseDir + "/system/setFieldsDict", os.str());
+        }
+        // --- physics
+        {
+            std::ostringstream os;
+            os << header("uniformDimensionedVectorField", "g", "constant")
+               << "// planar base at " << num(theta*180.0/pi) << " deg: x along the slope, y normal to it\n"
+               << "dimensions      [0 1 -2 0 0 0 0];\nvalue           (" << num(sc.g*std::sin(theta)) << " "
+               << num(-sc.g*std::cos(theta)) << " 0);\n";
+            writeFile(caseDir + "/constant/g", os.str());
+        }
+        {
+            std::ostringstream os;
+            os << header("dictionary", "transportProperties", "constant") << "phases (slide ambient);\n\n"
+               << "slide\n{\n    // Eq. (1) with the scene's rheology, read from constant/sceneProperties\n"
+               << "    transportModel  slideRheology;\n    slideRheologyCoeffs\n    {\n"
+               << "        regularisation  " << c.regularisation << ";\n"
+               << "        muMax           " << num(muMax) << ";   // s_u(rate)/rate at the plug creep rate "
+               << num(creep) << " 1/s\n"
+               << "        m               " << num(1.0/creep) << ";\n    }\n"
+               << "    rho             " << num(rhoSlide) << ";\n}\n\n"
+               << "ambient\n{\n    transportModel  Newtonian;\n    nu              "
+               << num(sc.ambient.viscosity/sc.ambient.density) << ";\n    rho             " << num(sc.ambient.density)
+               << ";\n}\n\nsigma           0;\n";
+            writeFile(caseDir + "/constant/transportProperties", os.str());
+            writeFile(caseDir + "/constant/turbulenceProperties",
+                      header("dictionary", "turbulenceProperties", "constant") + "simulationType  laminar;\n");
+        }
+        // --- fields
+        const std::string baseU = sc.interface.type == scene::Interface::Type::noSlip
+            ? "        type            noSlip;\n"
+            : "        type            slideBaseVelocity;   // " + sc.interface.typeName()
+              + " base from constant/sceneProperties\n        value           uniform (0 0 0);\n";
+        const std::string rearU = sc.slide.rearWall ? "        type            noSlip;\n"
+            : "        type            pressureInletOutletVelocity;\n        value           uniform (0 0 0);\n";
+        {
+            std::ostringstream os;
+            os << header("volVectorField", "U", "0") << "dimensions      [0 1 -1 0 0 0 0];\n\n"
+               << "internalField   uniform (0 0 0);\n\nboundaryField\n{\n"
+               << "    base\n    {\n" << baseU << "    }\n"
+               << "    upslope\n    {\n" << rearU << "    }\n"
+               << "    \"(top|downslope)\"\n    {\n        type            pressureInletOutletVelocity;\n"
+               << "        value           uniform (0 0 0);\n    }\n"
+               << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
+            writeFile(caseDir + "/0.orig/U", os.str());
+        }
+        const std::string openOrWall = sc.slide.rearWall ? "\"(base|upslope)\"" : "base";
+        const std::string openPatches = sc.slide.rearWall ? "\"(top|downslope)\"" : "\"(top|downslope|upslope)\"";
+        {
+            std::ostringstream os;
+            os << header("volScalarField", "p_rgh", "0") << "dimensions      [1 -1 -2 0 0 0 0];\n\n"
+               << "internalField   uniform 0;\n\nboundaryField\n{\n"
+               << "    " << openOrWall << "\n    {\n        type            fixedFluxPressure;\n"
+               << "        value           uniform 0;\n    }\n"
+               << "    " << openPatches << "\n    {\n        type            totalPressure;\n"
+               << "        p0              uniform 0;\n    }\n"
+               << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
+            writeFile(caseDir + "/0.orig/p_rgh", os.str());
+        }
+        for (const std::string name : {"alpha.slide", "xi"})
+        {
+            std::ostringstream os;
+            os << header("volScalarField", name, "0") << "dimensions      [0 0 0 0 0 0 0];\n\n"
+               << "internalField   uniform 0;\n\nboundaryField\n{\n"
+               << "    " << openOrWall << "\n    {\n        type            zeroGradient;\n    }\n"
+               << "    " << openPatches << "\n    {\n        type            inletOutlet;\n"
+               << "        inletValue      uniform 0;\n        value           uniform 0;\n    }\n"
+               << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
+            writeFile(caseDir + "/0.orig/" + name, os.str());
+        }
+        // --- numerics
+        writeFile(caseDir + "/system/fvSchemes", header("dictionary", "fvSchemes", "system") +
+R"(ddtSchemes
+{
+    default         Euler;
+}
+
+gradSchemes
+{
+    default         Gauss linear;
+}
+
+divSchemes
+{
+    div(rhoPhi,U)   Gauss linearUpwind grad(U);
+    div(phi,alpha)  Gauss vanLeer;
+    div(phirb,alpha) Gauss linear;
+    div(((rho*nuEff)*dev2(T(grad(U))))) Gauss linear;
+}
+
+laplacianSchemes
+{
+    default         Gauss linear corrected;
+}
+
+interpolationSchemes
+{
+    default         linear;
+}
+
+snGradSchemes
+{
+    default         corrected;
+}
+)");
+        writeFile(caseDir + "/system/fvSolution", header("dictionary", "fvSolution", "system") +
+R"(solvers
+{
+    "alpha.slide.*"
+    {
+        nAlphaCorr      1;
+        // One sub-cycle: the xi transport uses the step's alpha flux.
+        nAlphaSubCycles 1;
+        cAlpha          1;
+        MULESCorr       yes;
+        nLimiterIter    5;
+        solver          smoothSolver;
+        smoother        symGaussSeidel;
+        tolerance       1e-8;
+        relTol          0;
+    }
+
+    "pcorr.*"
+    {
+        solver          PCG;
+        preconditioner  DIC;
+        tolerance       1e-5;
+        relTol          0;
+    }
+
+    p_rgh
+    {
+        solver          GAMG;
+        smoother        DIC;
+        tolerance       1e-7;
+        relTol          0.01;
+    }
+
+    p_rghFinal
+    {
+        $p_rgh;
+        relTol          0;
+    }
+
+    "U.*"
+    {
+        // The plug's capped viscosity makes the momentum matrix stiff.
+        solver          PBiCGStab;
+        preconditioner  DILU;
+        tolerance       1e-8;
+        relTol          0;
+    }
+}
+
+PIMPLE
+{
+    momentumPredictor   yes;
+    nOuterCorrectors    1;
+    nCorrectors         3;
+    nNonOrthogonalCorrectors 0;
+}
+
+relaxationFactors
+{
+    equations
+    {
+        ".*"            1;
+    }
+}
+)");
+        {
+            std::ostringstream os;
+            os << header("dictionary", "decomposeParDict", "system") << "numberOfSubdomains " << c.processors
+               << ";\n\nmethod          simple;\n\ncoeffs\n{\n    n           (" << c.processors << " 1 1);\n}\n";
+            writeFile(caseDir + "/system/decomposeParDict", os.str());
+        }
+        writeFile(caseDir + "/" + (sc.caseName.empty() ? std::string("case") : sc.caseName) + ".foam", "");
+        std::cout << "Wrote system/{blockMeshDict,setFieldsDict,fvSchemes,fvSolution,decomposeParDict}, "
+                  << "constant/{g,transportProperties,turbulenceProperties}, 0.orig/{U,p_rgh,alpha.slide,xi}\n"
+                  << "End" << std::endl;
+        return 0;
+    });
+}

@@ -1,0 +1,273 @@
+#include "slideRunout.H"
+#include "slideSceneObject.H"
+#include "addToRunTimeSelectionTable.H"
+#include "Pstream.H"
+
+#include <algorithm>
+#include <numeric>
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(slideRunout, 0);
+    addToRunTimeSelectionTable(functionObject, slideRunout, dictionary);
+}
+}
+
+
+Foam::scalar Foam::functionObjects::slideRunout::arcLength(const scalar x) const
+{
+    // slideFoam's case generator puts a planar base along x from s = 0; a
+    // polyline base is meshed in the global (x, z) frame with vertical columns.
+    return scene_.base.isPlanar() ? x : scene_.base.arcLengthAtX(x);
+}
+
+
+void Foam::functionObjects::slideRunout::buildColumns()
+{
+    const label patchi = mesh_.boundaryMesh().findPatchID(patchName_);
+    if (patchi < 0)
+    {
+        FatalErrorInFunction
+            << "function object " << name() << ": no patch '" << patchName_
+            << "' (the base) in the mesh" << exit(FatalError);
+    }
+    const fvPatch& base = mesh_.boundary()[patchi];
+
+    // Every rank gets every base face (x, area), so that all agree on the columns.
+    List<scalarField> allX(Pstream::nProcs()), allA(Pstream::nProcs());
+    allX[Pstream::myProcNo()] = base.Cf().component(vector::X);
+    allA[Pstream::myProcNo()] = base.magSf();
+    Pstream::gatherList(allX);
+    Pstream::scatterList(allX);
+    Pstream::gatherList(allA);
+    Pstream::scatterList(allA);
+
+    DynamicList<scalar> x, a;
+    DynamicList<label> owner, local;
+    forAll(allX, proci)
+    {
+        forAll(allX[proci], i)
+        {
+            x.append(allX[proci][i]);
+            a.append(allA[proci][i]);
+            owner.append(proci);
+            local.append(i);
+        }
+    }
+    labelList order(x.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](label i, label j) { return x[i] < x[j]; });
+
+    const label nCol = x.size();
+    scalarList colX(nCol);
+    columnS_.setSize(nCol);
+    columnArea_.setSize(nCol);
+    faceColumn_.setSize(base.size());
+    forAll(order, c)
+    {
+        const label k = order[c];
+        colX[c] = x[k];
+        columnS_[c] = arcLength(x[k]);
+        columnArea_[c] = a[k];
+        if (owner[k] == Pstream::myProcNo()) faceColumn_[local[k]] = c;
+    }
+
+    // A cell belongs to the column whose base face lies below it: columns are
+    // split half-way between neighbouring base-face centres.
+    scalarList edges(max(nCol - 1, 0));
+    forAll(edges, c) edges[c] = 0.5*(colX[c] + colX[c + 1]);
+    const vectorField& C = mesh_.C();
+    cellColumn_.setSize(mesh_.nCells());
+    forAll(C, celli)
+    {
+        cellColumn_[celli] = label(std::upper_bound(edges.begin(), edges.end(), C[celli].x()) - edges.begin());
+    }
+
+    depth_ = mesh_.bounds().span().z();
+    if (depth_ <= 0) depth_ = 1;
+}
+
+
+Foam::functionObjects::slideRunout::slideRunout
+(
+    const word& name, const Time& runTime, const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    alphaName_("alpha.slide"),
+    patchName_("base"),
+    scene_(slideSceneObject::New(mesh_))
+{
+    read(dict);
+    buildColumns();
+    if (Pstream::master())
+    {
+        const scalar t0 = runTime.startTime().value();
+        log_.reset(new slide::output::RunoutLog(runTime.globalPath(), "slideFoam", t0 > 0, t0));
+    }
+}
+
+
+bool Foam::functionObjects::slideRunout::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    alphaName_ = dict.getOrDefault<word>("alpha", "alpha.slide");
+    patchName_ = dict.getOrDefault<word>("patch", "base");
+    return true;
+}
+
+
+bool Foam::functionObjects::slideRunout::execute()
+{
+    const volScalarField& alpha = lookupObject<volScalarField>(alphaName_);
+    const volVectorField& U = lookupObject<volVectorField>("U");
+    const volScalarField* xi = findObject<volScalarField>("xi");
+    const scalarField& V = mesh_.V();
+    const scalar rho = scene_.slide.density;
+    const label nCol = columnS_.size();
+
+    scalarList baseAlpha(nCol, scalar(-1)), colAV(nCol, Zero), colAVU(nCol, Zero);
+    const label patchi = mesh_.boundaryMesh().findPatchID(patchName_);
+    const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+    forAll(faceCells, facei)
+    {
+        baseAlpha[faceColumn_[facei]] = alpha[faceCells[facei]];
+    }
+
+    State s;
+    scalar ke = 0, uMax = 0, xiMax = 0;
+    scalar aMin = GREAT, aMax = -GREAT;
+    forAll(alpha, celli)
+    {
+        const scalar a = alpha[celli];
+        const scalar av = a*V[celli];
+        const label c = cellColumn_[celli];
+        const vector t = scene_.base.isPlanar() ? vector(1, 0, 0) : [&]()
+        {
+            const slide::scene::Point2 tp = scene_.base.tangent(columnS_[c]);
+            return vector(tp.x, tp.z, 0);
+        }();
+        colAV[c] += av;
+        colAVU[c] += av*(U[celli] & t);
+        s.volume += av;
+        ke += 0.5*av*magSqr(U[celli]);
+        aMin = min(aMin, a);
+        aMax = max(aMax, a);
+        if (a >= 0.5)
+        {
+            uMax = max(uMax, mag(U[celli]));
+            if (xi) xiMax = max(xiMax, (*xi)[celli]);
+        }
+    }
+    Pstream::listCombineGather(baseAlpha, maxEqOp<scalar>());
+    Pstream::listCombineScatter(baseAlpha);
+    Pstream::listCombineGather(colAV, plusEqOp<scalar>());
+    Pstream::listCombineScatter(colAV);
+    Pstream::listCombineGather(colAVU, plusEqOp<scalar>());
+    Pstream::listCombineScatter(colAVU);
+    reduce(s.volume, sumOp<scalar>());
+    reduce(ke, sumOp<scalar>());
+    reduce(uMax, maxOp<scalar>());
+    reduce(xiMax, maxOp<scalar>());
+    reduce(aMin, minOp<scalar>());
+    reduce(aMax, maxOp<scalar>());
+
+    // The alpha = 0.5 contour along the base, between base-row cell centres.
+    label front = -1, rear = -1;
+    for (label c = nCol - 1; c >= 0; --c) if (baseAlpha[c] >= 0.5) { front = c; break; }
+    for (label c = 0; c < nCol; ++c) if (baseAlpha[c] >= 0.5) { rear = c; break; }
+
+    const scalar s0 = scene_.slide.frontPosition();
+    s.sample = state_.sample;
+    s.sample.time = time_.value();
+    if (front >= 0)
+    {
+        scalar sf = columnS_[front];
+        if (front + 1 < nCol)
+        {
+            const scalar a0 = baseAlpha[front], a1 = max(baseAlpha[front + 1], scalar(0));
+            sf += (a0 - 0.5)/max(a0 - a1, SMALL)*(columnS_[front + 1] - columnS_[front]);
+        }
+        // A slide against the mesh's end (a flume's end wall) reaches its face.
+        if (front == nCol - 1 && nCol > 1) sf = columnS_[front] + 0.5*(columnS_[front] - columnS_[front - 1]);
+        scalar sr = columnS_[rear];
+        if (rear == 0 && nCol > 1)
+        {
+            sr -= 0.5*(columnS_[1] - columnS_[0]);
+        }
+        else if (rear > 0)
+        {
+            const scalar a0 = baseAlpha[rear], a1 = max(baseAlpha[rear - 1], scalar(0));
+            sr -= (a0 - 0.5)/max(a0 - a1, SMALL)*(columnS_[rear] - columnS_[rear - 1]);
+        }
+        s.sample.front = sf - s0;
+        s.sample.rear = sr - s0;
+        s.sample.frontVelocity = colAV[front] > 0 ? colAVU[front]/colAV[front] : 0;
+        s.atDomainEnd = front == nCol - 1;
+    }
+    scalar hMax = 0;
+    forAll(colAV, c) hMax = max(hMax, colAV[c]/columnArea_[c]);
+    s.sample.maxVelocity = uMax;
+    s.sample.maxThickness = hMax;
+    s.sample.mass = rho*s.volume/depth_;
+    s.sample.kineticEnergy = rho*ke/depth_;
+    s.volume /= depth_;
+    s.alphaMin = aMin;
+    s.alphaMax = aMax;
+    s.xiMax = xiMax;
+    if (initialVolume_ < 0) initialVolume_ = s.volume;
+    state_ = s;
+
+    if (time_.writeTime() || time_.timeIndex() == time_.startTimeIndex())
+    {
+        if (log_) log_->write(state_.sample);
+
+        // Rest: every slide cell slower than restVelocity at two successive writes.
+        if (time_.timeIndex() > time_.startTimeIndex())
+        {
+            slowSamples_ = uMax < scene_.control.restVelocity ? slowSamples_ + 1 : 0;
+            atRest_ = slowSamples_ >= 2;
+        }
+
+        const scalar t0 = time_.startTime().value(), t1 = time_.endTime().value();
+        const scalar frac = t1 > t0 ? (time_.value() - t0)/(t1 - t0) : 1;
+        const scalar wall = time_.elapsedClockTime();
+        Info<< "slideRunout: time " << time_.value() << " s  front " << state_.sample.front
+            << " m  rear " << state_.sample.rear << " m  max |U| " << uMax
+            << " m/s  volume change " << (state_.volume/initialVolume_ - 1)
+            << "  xi max " << xiMax;
+        if (frac > 0 && frac < 1) Info<< "  estimated time left " << wall*(1 - frac)/frac << " s";
+        Info<< endl;
+    }
+    return true;
+}
+
+
+void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, const bool atRest) const
+{
+    const label nCells = returnReduce(mesh_.nCells(), sumOp<label>());
+    if (!Pstream::master()) return;
+
+    slide::output::Summary sum;
+    sum.method = "slideFoam";
+    sum.caseName = scene_.caseName;
+    sum.runout = state_.sample.front;
+    sum.endTime = time_.value();
+    sum.atRest = atRest;
+    sum.wallTime = wallTime;
+    sum.problemSize = nCells;
+    sum.problemSizeUnit = "cells";
+    sum.backend = Pstream::parRun()
+        ? "OpenFOAM v1912, MPI (" + std::to_string(Pstream::nProcs()) + " ranks)"
+        : std::string("OpenFOAM v1912, serial");
+    sum.addNumber("final_length_m", state_.sample.front - state_.sample.rear);
+    sum.addNumber("max_thickness_m", state_.sample.maxThickness);
+    sum.addNumber("volume_relative_change", state_.volume/initialVolume_ - 1);
+    sum.addNumber("alpha_min", state_.alphaMin);
+    sum.addNumber("alpha_max", state_.alphaMax);
+    sum.addNumber("xi_max", state_.xiMax);
+    sum.addBool("reached_domain_end", state_.atDomainEnd);
+    sum.write(time_.globalPath());
+}
