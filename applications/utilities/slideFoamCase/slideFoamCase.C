@@ -17,6 +17,7 @@
 #include "outputContract.H"
 #include "scene.H"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -63,6 +64,23 @@ double damRunout(const std::string& caseDir)
     const auto pos = text.find(key);
     if (pos == std::string::npos) return -1.0;
     return std::atof(text.c_str() + pos + key.size());
+}
+
+// The farthest upslope slideDAM's rear got (arc length from the initial front), or 1 if none.
+double damRearMin(const std::string& caseDir)
+{
+    std::ifstream is(caseDir + "/postProcessing/slideDAM/runout.dat");
+    if (!is) return 1.0;
+    std::string line;
+    double rearMin = 1.0;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream ls(line);
+        double t, front, rear;
+        if (ls >> t >> front >> rear) rearMin = std::min(rearMin, rear);
+    }
+    return rearMin;
 }
 
 std::string num(double v)
@@ -116,7 +134,29 @@ int main(int argc, char** argv)
             reach = c.reachFactor*dam + 2.0*H0;
             reachFrom = num(c.reachFactor) + " x slideDAM's runout " + num(dam) + " m + 2 H0";
         }
-        const double behind = c.behind >= 0.0 ? c.behind : (sc.slide.rearWall ? 0.0 : H0);
+        double behind = c.behind;
+        std::string behindFrom = "system/cfdDict behind";
+        if (behind < 0.0)
+        {
+            const double rearMin = damRearMin(caseDir);
+            if (sc.slide.rearWall)
+            {
+                behind = 0.0;
+                behindFrom = "the rear wall";
+            }
+            else if (rearMin < 1.0)
+            {
+                // The rear spreads upslope as the slide collapses: size from the DAM's farthest rear.
+                behind = c.reachFactor*std::max(0.0, -rearMin - sc.slide.length) + 2.0*H0;
+                behindFrom = num(c.reachFactor) + " x slideDAM's upslope spreading "
+                             + num(std::max(0.0, -rearMin - sc.slide.length)) + " m + 2 H0";
+            }
+            else
+            {
+                behind = 2.0*H0;
+                behindFrom = "2 H0 (no slideDAM result)";
+            }
+        }
 
         // Cells aligned with the slide's rear so that its edges fall on cell faces where L0/dx is whole.
         const int nBehind = int(std::ceil(behind/dx - 1e-9));
@@ -143,6 +183,7 @@ int main(int argc, char** argv)
                   << "  mesh " << nx << " x " << ny << " = " << long(cells) << " cells of " << dx << " m, x in ["
                   << x0 << ", " << x1 << "] m along the base, height " << y1 << " m\n"
                   << "  reach ahead of the front " << nAhead*dx << " m (" << reachFrom << ")\n"
+                  << "  mesh behind the rear " << nBehind*dx << " m (" << behindFrom << ")\n"
                   << "  slide density " << rhoSlide << " kg/m3 in a " << (water ? "water" : "light") << " ambient of "
                   << sc.ambient.density << " kg/m3\n"
                   << "  plug creep rate " << creep << " 1/s: " << (c.regularisation == "cap"

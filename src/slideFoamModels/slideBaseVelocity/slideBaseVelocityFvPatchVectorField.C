@@ -3,14 +3,23 @@
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 
+void Foam::slideBaseVelocityFvPatchVectorField::setStuck()
+{
+    refValue() = Zero;
+    refGrad() = Zero;
+    valueFraction() = symmTensor::I;
+}
+
+
 Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
 (
     const fvPatch& p, const DimensionedField<vector, volMesh>& iF
 )
 :
-    fixedValueFvPatchVectorField(p, iF),
-    relaxation_(1)
-{}
+    directionMixedFvPatchVectorField(p, iF)
+{
+    setStuck();
+}
 
 
 Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
@@ -18,14 +27,9 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     const fvPatch& p, const DimensionedField<vector, volMesh>& iF, const dictionary& dict
 )
 :
-    fixedValueFvPatchVectorField(p, iF, dict, false),
-    relaxation_(dict.getOrDefault<scalar>("relaxation", 1))
+    directionMixedFvPatchVectorField(p, iF)
 {
-    if (relaxation_ <= 0 || relaxation_ > 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "key 'relaxation': must lie in (0, 1], got " << relaxation_ << exit(FatalIOError);
-    }
+    setStuck();
     if (dict.found("value"))
     {
         fvPatchVectorField::operator=(vectorField("value", dict, p.size()));
@@ -43,18 +47,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     const DimensionedField<vector, volMesh>& iF, const fvPatchFieldMapper& mapper
 )
 :
-    fixedValueFvPatchVectorField(ptf, p, iF, mapper),
-    relaxation_(ptf.relaxation_)
-{}
-
-
-Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
-(
-    const slideBaseVelocityFvPatchVectorField& ptf
-)
-:
-    fixedValueFvPatchVectorField(ptf),
-    relaxation_(ptf.relaxation_)
+    directionMixedFvPatchVectorField(ptf, p, iF, mapper)
 {}
 
 
@@ -63,8 +56,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     const slideBaseVelocityFvPatchVectorField& ptf, const DimensionedField<vector, volMesh>& iF
 )
 :
-    fixedValueFvPatchVectorField(ptf, iF),
-    relaxation_(ptf.relaxation_)
+    directionMixedFvPatchVectorField(ptf, iF)
 {}
 
 
@@ -77,11 +69,10 @@ Foam::scalar Foam::slideBaseVelocityFvPatchVectorField::slipSpeed
     if (iface.type == Type::noSlip || cellSpeed <= 0) return 0;
     if (iface.type == Type::frictional)
     {
-        // Stuck while the traction k |U_t| stays within s_b (Eq. 5's frictional base).
         return max(scalar(0), cellSpeed - iface.s_b/k);
     }
-    // Hydroplaning: k (|U_t| - U_w) = a U_w^2 with a = 0.5 rho_w C_F; the
-    // positive root written without cancellation.
+    // Hydroplaning: k (|U_t| - V) = a V^2 with a = 0.5 rho_w C_F; the positive
+    // root written without cancellation.
     const scalar a = 0.5*iface.rhoWater*iface.C_F;
     if (a <= 0) return cellSpeed;
     return 2*k*cellSpeed/(k + Foam::sqrt(k*k + 4*a*k*cellSpeed));
@@ -93,7 +84,7 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
     if (updated()) return;
 
     const slide::scene::Interface& iface = slideSceneObject::New(db()).interface;
-    vectorField Uw(patch().size(), Zero);
+    setStuck();
 
     if (iface.type != slide::scene::Interface::Type::noSlip)
     {
@@ -104,26 +95,27 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
         const vectorField n(patch().nf());
         const scalarField& deltaCoeffs = patch().deltaCoeffs();
 
-        forAll(Uw, facei)
+        forAll(Uc, facei)
         {
             const vector Ut = Uc[facei] - n[facei]*(n[facei] & Uc[facei]);
             const scalar speed = mag(Ut);
-            if (speed < VSMALL) continue;
-            const scalar k = rhow[facei]*nuw[facei]*deltaCoeffs[facei];
-            Uw[facei] = Ut*(slipSpeed(iface, speed, k)/speed);
+            const scalar mu = rhow[facei]*nuw[facei];
+            const scalar V = slipSpeed(iface, speed, mu*deltaCoeffs[facei]);
+            if (V <= 0) continue;   // stuck: the no-slip traction stays within s_b
+            // Slipping: the base resists with s_b(V) against the motion (Eq. 5).
+            const scalar tau = iface.basalStrength(V);
+            valueFraction()[facei] = sqr(n[facei]);
+            refGrad()[facei] = -(tau/mu)*Ut/speed;
         }
     }
 
-    const vectorField& old = *this;
-    fvPatchVectorField::operator==((1 - relaxation_)*old + relaxation_*Uw);
-    fixedValueFvPatchVectorField::updateCoeffs();
+    directionMixedFvPatchVectorField::updateCoeffs();
 }
 
 
 void Foam::slideBaseVelocityFvPatchVectorField::write(Ostream& os) const
 {
     fvPatchVectorField::write(os);
-    os.writeEntryIfDifferent<scalar>("relaxation", 1, relaxation_);
     writeEntry("value", os);
 }
 

@@ -1,0 +1,218 @@
+#!/usr/bin/env python3
+"""slideFoam's tests, each a CTest test (slideFoam_<name>), on small 2D cases
+generated from SlideFoam scenes by slideFoamCase:
+
+  peer        remoulding off: slideFoam's Eq. (1) viscosity reproduces OpenFOAM's
+              interFoam with its HerschelBulkley model (same cap) field for field,
+              without and with the rate effect
+  flume       Krone-Wright Run 15 at H0/10 to 4.1 s: front against the lubrication
+              solution, slide volume, alpha bounds, xi bounds, rear at the wall
+  base        the base condition: a frictional base that never reaches s_b is the
+              no-slip base to round-off; s_b = 0, s_b 20 Pa, hydroplaning and no-slip
+              order the runout as they must; volume conserved with each
+  remoulding  xi grows only in yielded slide material and weakens it: the same
+              slide runs further with remoulding than without
+  parallel    the flume on 2 MPI ranks (decomposePar) matches the serial run
+
+Usage: slideFoamTest.py NAME [workDir]"""
+import os
+import shutil
+import sys
+import tempfile
+
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
+sys.path.insert(0, os.path.join(top, "validation", "lib"))
+from cfdcase import make_case, prepare, run, run_slidefoam, read_field, time_dirs  # noqa: E402
+from slidefoam_io import read_runout, read_summary  # noqa: E402
+
+FLUME = os.path.join(top, "tutorials", "kroneWrightRun15")
+failures = []
+
+
+def check(ok, what):
+    print(("ok    " if ok else "FAIL  ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def summary(case):
+    return read_summary(os.path.join(case, "postProcessing", "slideFoam", "summary.json"))
+
+
+def runout(case):
+    return read_runout(os.path.join(case, "postProcessing", "slideFoam", "runout.dat"))
+
+
+def test_peer(work):
+    for label, scene in [("no rate effect", {"eta": 0}), ("rate effect n = 0.23", {"eta": 0.45, "n": 0.23})]:
+        tag = "peer_eta%g" % scene["eta"]
+        sf = make_case(FLUME, work, tag + "_slideFoam", scene=scene, control={"endTime": 0.5, "writeInterval": 0.5, "writePrecision": 16},
+                       cfd={"cellsPerHeight": 10, "reach": 2})
+        prepare(sf)
+        ref = os.path.join(work, tag + "_interFoam")
+        if os.path.exists(ref):
+            shutil.rmtree(ref)
+        shutil.copytree(sf, ref)
+        # The same material as OpenFOAM's HerschelBulkley: tau0 + k gdot^n with
+        # tau0 = s_uo, k = s_uo eta / gdotRef^n (Eq. 1 without remoulding), same cap.
+        tp = os.path.join(ref, "constant", "transportProperties")
+        text = open(tp).read()
+        rho = 1073.0
+        s_uo, eta, n, gref = 42.5, scene["eta"], scene.get("n", 1.0), 0.06
+        mu_max = float(text.split("muMax")[1].split(";")[0])
+        hb = ("transportModel  HerschelBulkley;\n    HerschelBulkleyCoeffs\n    {\n"
+              "        tau0 %.17g;\n        k %.17g;\n        n %.17g;\n        nu0 %.17g;\n    }\n"
+              % (s_uo/rho, s_uo*eta/gref**n/rho, n, mu_max/rho))
+        start = text.index("transportModel  slideRheology;")
+        end = text.index("    rho ", start)
+        open(tp, "w").write(text[:start] + hb + text[end:])
+        run_slidefoam(sf)
+        run(ref, "interFoam")
+        t = time_dirs(sf)[-1]
+        check(t == time_dirs(ref)[-1] and abs(float(t) - 0.5) < 1e-9, "%s: both reach t = 0.5 s (%s)" % (label, t))
+        for field, tol in [("U", 1e-8), ("alpha.slide", 1e-8), ("p_rgh", 1e-5)]:
+            a, b = read_field(sf, t, field), read_field(ref, t, field)
+            diff = float(np.max(np.abs(a - b)))
+            scale = float(np.max(np.abs(b)))
+            check(diff <= tol, "%s: %s equal to interFoam's: max |difference| %.3g (scale %.3g, tolerance %g)"
+                  % (label, field, diff, scale, tol))
+        su = summary(sf)
+        check(su["xi_max"] > 0, "%s: xi accumulated (max %.3g) without feeding back (deltaRem 1)" % (label, su["xi_max"]))
+
+
+def flume_case(work, name, cells=10, end=4.1, write=0.1):
+    c = make_case(FLUME, work, name, control={"endTime": end, "writeInterval": write},
+                  cfd={"cellsPerHeight": cells, "reach": 5})
+    prepare(c)
+    return c
+
+
+def test_flume(work):
+    c = flume_case(work, "flume")
+    run_slidefoam(c)
+    s, r = summary(c), runout(c)
+    length = s["final_length_m"]
+    lubrication = 5.50   # leading-order lubrication front from the end wall at 4.1 s (validation/dam)
+    check(abs(length/lubrication - 1) < 0.10, "front at 4.1 s %.3f m from the end wall, lubrication %.2f m (within 10 %%)"
+          % (length, lubrication))
+    check(abs(s["volume_relative_change"]) < 0.005, "slide volume change %.2e (within 0.5 %%)"
+          % s["volume_relative_change"])
+    vol0 = r["mass"][0]
+    worst = float(np.max(np.abs(r["mass"]/vol0 - 1)))
+    check(worst < 0.005, "slide mass within 0.5 %% at every write (worst %.2e)" % worst)
+    check(s["alpha_min"] > -1e-3 and s["alpha_max"] < 1 + 1e-3, "alpha in [0, 1] within 1e-3: [%.3g, %.6f]"
+          % (s["alpha_min"], s["alpha_max"]))
+    xi = read_field(c, time_dirs(c)[-1], "xi")
+    alpha = read_field(c, time_dirs(c)[-1], "alpha.slide")
+    check(xi.min() >= 0, "xi never negative (min %.3g)" % xi.min())
+    check(float(np.max(xi[alpha < 1e-3])) == 0.0 if np.any(alpha < 1e-3) else True, "no xi in the ambient phase")
+    check(abs(r["rear"][-1] + 1.8) < 1e-9, "rear stays at the end wall (%.4f m)" % r["rear"][-1])
+    check(bool(np.all(np.diff(r["front"]) >= -1e-3)), "front never retreats")
+
+
+def base_case(work, name, interface):
+    # The flume's slurry released without its end wall: a weak slide that flows.
+    c = make_case(FLUME, work, name, scene={"rearWall": "no"}, control={"endTime": 1.5, "writeInterval": 0.5},
+                  cfd={"cellsPerHeight": 10, "reach": 8, "behind": 4})
+    p = os.path.join(c, "constant", "sceneProperties")
+    text = open(p).read()
+    i = text.index("interface noSlip;")
+    open(p, "w").write(text[:i] + interface + text[i + len("interface noSlip;"):])
+    prepare(c)
+    run_slidefoam(c)
+    return c
+
+
+def centre_of_mass_travel(case, t):
+    """Downslope travel of the slide's centre of mass from 0 to t [m]."""
+    run(case, "postProcess", "-func", "writeCellCentres", "-time", "0")
+    x = read_field(case, "0", "C")[:, 0]
+    com = [float((read_field(case, u, "alpha.slide")*x).sum()/read_field(case, u, "alpha.slide").sum())
+           for u in ("0", t)]
+    return com[1] - com[0]
+
+
+def test_base(work):
+    no_slip = base_case(work, "base_noSlip", "interface noSlip;")
+    stuck = base_case(work, "base_s_b_1e6", "interface frictional;\n    s_b 1e6;")
+    t = time_dirs(no_slip)[-1]
+    du = float(np.max(np.abs(read_field(no_slip, t, "U") - read_field(stuck, t, "U"))))
+    check(du < 1e-9, "s_b = 1 MPa never reached: the frictional base stays stuck, U equal to no-slip's (max "
+                     "|difference| %.2g m/s)" % du)
+    travel = {"noSlip": centre_of_mass_travel(no_slip, t)}
+    for label, iface in [("s_b 20 Pa", "interface frictional;\n    s_b 20;"),
+                         ("hydroplaning C_F 0.5", "interface hydroplaning;\n    C_F 0.5;"),
+                         ("s_b 0", "interface frictional;\n    s_b 0;")]:
+        c = base_case(work, "base_" + label.split()[0] + label.split()[-1], iface)
+        travel[label] = centre_of_mass_travel(c, t)
+        check(abs(summary(c)["volume_relative_change"]) < 0.005, "%s: volume conserved (%.2e)"
+              % (label, summary(c)["volume_relative_change"]))
+    print("centre of mass travel in %s s: " % t + ", ".join("%s %.3f m" % kv for kv in travel.items()))
+    # No tangential traction on the base: the centre of mass moves at g sin(theta)
+    # whatever the slide does inside (air drag is below 0.5 % of the weight here).
+    exact = 0.5*9.81*np.sin(np.radians(3.43))*float(t)**2
+    check(abs(travel["s_b 0"]/exact - 1) < 0.08, "frictionless base: centre of mass moved %.3f m, "
+          "g sin(theta) t^2/2 = %.3f m (within 8 %%)" % (travel["s_b 0"], exact))
+    check(travel["noSlip"] < travel["s_b 20 Pa"] < travel["s_b 0"],
+          "a weaker base lets the slide's centre of mass travel further: no-slip %.3f < s_b 20 Pa %.3f < s_b 0 %.3f m"
+          % (travel["noSlip"], travel["s_b 20 Pa"], travel["s_b 0"]))
+    check(travel["noSlip"] < travel["hydroplaning C_F 0.5"] < travel["s_b 0"],
+          "hydroplaning lies between no-slip and frictionless: %.3f m" % travel["hydroplaning C_F 0.5"])
+
+
+def test_remoulding(work):
+    common = dict(control={"endTime": 2, "writeInterval": 0.5}, cfd={"cellsPerHeight": 10, "reach": 5})
+    intact = make_case(FLUME, work, "intact", **common)
+    soft = make_case(FLUME, work, "remoulding", scene={"deltaRem": 0.3}, **common)
+    p = os.path.join(soft, "constant", "sceneProperties")
+    text = open(p).read()
+    open(p, "w").write(text.replace("deltaRem 0.3;", "deltaRem 0.3;\n    xi95     10;"))
+    for c in (intact, soft):
+        prepare(c)
+        run_slidefoam(c)
+    fi, fs = runout(intact)["front"][-1], runout(soft)["front"][-1]
+    check(fs > fi*1.02, "remoulding (deltaRem 0.3, xi95 10) runs further: %.3f m vs %.3f m intact" % (fs, fi))
+    t = time_dirs(soft)[-1]
+    xi, alpha = read_field(soft, t, "xi"), read_field(soft, t, "alpha.slide")
+    check(xi.min() >= 0, "xi never negative (min %.3g, max %.3g)" % (xi.min(), xi.max()))
+    check(float(np.max(xi[alpha < 1e-3], initial=0.0)) == 0.0, "no xi outside the slide (alpha < 1e-3)")
+    check(abs(float(np.max(xi[alpha >= 0.5])) - summary(soft)["xi_max"]) < 1e-6*summary(soft)["xi_max"],
+          "summary.json's xi_max is the slide's largest xi")
+    check(float(np.max(xi[alpha > 0.99])) > 1.0, "sheared slide cells reach xi > 1 (max %.3g)"
+          % float(np.max(xi[alpha > 0.99])))
+
+
+def test_parallel(work):
+    serial = flume_case(work, "serial", end=1.0, write=0.5)
+    par = flume_case(work, "parallel", end=1.0, write=0.5)
+    run_slidefoam(serial)
+    run_slidefoam(par, processors=2)
+    ss, sp = summary(serial), summary(par)
+    check("2 ranks" in sp["backend"], "parallel run on %s" % sp["backend"])
+    d = abs(ss["runout_m"] - sp["runout_m"])
+    check(d < 1e-3, "front at 1 s: serial %.6f m, 2 ranks %.6f m (|difference| %.2g < 1 mm)"
+          % (ss["runout_m"], sp["runout_m"], d))
+    t = time_dirs(serial)[-1]
+    slide = read_field(serial, t, "alpha.slide") > 0.5
+    us, up = read_field(serial, t, "U")[slide], read_field(par, t, "U")[slide]
+    du = float(np.max(np.abs(us - up)))
+    umax = float(np.max(np.abs(us)))
+    # The ranks' GAMG agglomerations differ, and p_rgh is solved to relTol 0.01 before its final corrector.
+    check(du < 0.005*umax, "U in the slide: max |difference| %.2g m/s, %.2g %% of the largest speed (< 0.5 %%)"
+          % (du, 100*du/umax))
+
+
+def main():
+    name = sys.argv[1]
+    work = sys.argv[2] if len(sys.argv) > 2 else tempfile.mkdtemp(prefix="slideFoamTest_")
+    os.makedirs(work, exist_ok=True)
+    globals()["test_" + name](work)
+    print("%d failed" % len(failures) if failures else "all checks passed")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,102 @@
+"""slideFoam cases from SlideFoam scenes, for tests and validation scripts:
+copy a scene case, edit its scene and run control, generate the CFD case
+(slideFoamCase, blockMesh, setFields), run slideFoam serially or with MPI, and
+read OpenFOAM ASCII fields back."""
+import os
+import re
+import shutil
+import subprocess
+
+import numpy as np
+
+from runner import slidefoam_env, which
+
+GENERATED = ["0", "0.orig", "constant/polyMesh", "postProcessing", "processor*"]
+
+
+def set_entry(path, key, value):
+    """Sets `key value;` (top level or inside a block) in an OpenFOAM-style dictionary."""
+    text = open(path).read()
+    new, n = re.subn(r"^(\s*%s\s+)[^;]*;" % re.escape(key), lambda m: m.group(1) + str(value) + ";", text,
+                     count=1, flags=re.M)
+    if n == 0:
+        raise KeyError("%s: no entry %s" % (path, key))
+    open(path, "w").write(new)
+
+
+def make_case(template, work, name, scene=None, control=None, cfd=None):
+    """A copy of a scene case with scene/control entries replaced and system/cfdDict written."""
+    d = os.path.join(work, name)
+    if os.path.exists(d):
+        shutil.rmtree(d)
+    shutil.copytree(template, d, ignore=shutil.ignore_patterns("postProcessing", "log.*", "processor*", "0", "0.orig",
+                                                               "polyMesh", "[0-9]*.[0-9]*", "*.foam"))
+    for k, v in (scene or {}).items():
+        set_entry(os.path.join(d, "constant", "sceneProperties"), k, v)
+    for k, v in (control or {}).items():
+        set_entry(os.path.join(d, "system", "controlDict"), k, v)
+    if cfd is not None:
+        with open(os.path.join(d, "system", "cfdDict"), "w") as f:
+            for k, v in cfd.items():
+                f.write("%s %s;\n" % (k, v))
+    return d
+
+
+def run(case, *cmd, log=None, check=True):
+    """Runs an application in a case, its output in log.<app> as runApplication does."""
+    env = dict(slidefoam_env())
+    log = log or "log." + os.path.basename(cmd[0])
+    with open(os.path.join(case, log), "w") as f:
+        p = subprocess.run(list(cmd), cwd=case, stdout=f, stderr=subprocess.STDOUT, env=env)
+    if check and p.returncode != 0:
+        tail = open(os.path.join(case, log)).read()[-3000:]
+        raise RuntimeError("%s failed in %s:\n%s" % (" ".join(cmd), case, tail))
+    return p.returncode
+
+
+def prepare(case):
+    """slideFoamCase, blockMesh, 0.orig -> 0, setFields."""
+    run(case, which("slideFoamCase"), "-case", ".")
+    run(case, "blockMesh")
+    shutil.copytree(os.path.join(case, "0.orig"), os.path.join(case, "0"), dirs_exist_ok=True)
+    run(case, "setFields")
+
+
+def run_slidefoam(case, processors=1, app="slideFoam"):
+    exe = which(app) if app.startswith("slide") else app
+    if processors == 1:
+        return run(case, exe)
+    set_entry(os.path.join(case, "system", "decomposeParDict"), "numberOfSubdomains", processors)
+    set_entry(os.path.join(case, "system", "decomposeParDict"), "n", "(%d 1 1)" % processors)
+    run(case, "decomposePar", "-force")
+    run(case, "mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(processors), exe, "-parallel",
+        log="log." + app)
+    return run(case, "reconstructPar", "-latestTime")
+
+
+def time_dirs(case):
+    out = []
+    for n in os.listdir(case):
+        try:
+            out.append((float(n), n))
+        except ValueError:
+            pass
+    return [n for _, n in sorted(out)]
+
+
+def read_field(case, time, name):
+    """internalField of an ASCII volScalarField/volVectorField as a numpy array."""
+    text = open(os.path.join(case, time, name)).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+    if m:
+        n = int(m.group(2))
+        body = text[m.end():]
+        if m.group(1) == "vector":
+            vals = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
+            return np.array([[float(x) for x in v.split()] for v in vals[:n]])
+        return np.array([float(x) for x in body[:body.index(")")].split()[:n]])
+    m = re.search(r"internalField\s+uniform\s+(\([^)]*\)|[^;]+);", text)
+    if not m:
+        raise ValueError("no internalField in %s/%s/%s" % (case, time, name))
+    v = m.group(1).strip()
+    return np.array([float(x) for x in v.strip("()").split()])
