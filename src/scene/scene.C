@@ -188,6 +188,10 @@ Ambient readAmbient(const Dictionary& d)
 RunControl readControl(const Dictionary& d)
 {
     RunControl c;
+    if (d.found("startFrom"))
+    {
+        c.startFromLatest = d.getWordOneOf("startFrom", {"startTime", "latestTime"}) == "latestTime";
+    }
     c.startTime = d.getScalar("startTime", 0.0);
     if (c.startTime < 0.0) d.fail("startTime", "must be >= 0");
     c.endTime = d.getScalar("endTime");

@@ -1,6 +1,6 @@
 """slideFoam cases from SlideFoam scenes, for tests and validation scripts:
 copy a scene case, edit its scene and run control, generate the CFD case
-(slideFoamCase, blockMesh, setFields), run slideFoam serially or with MPI, and
+(slideFoamCase, blockMesh), run slideFoam serially or with MPI, and
 read OpenFOAM ASCII fields back."""
 import os
 import re
@@ -55,11 +55,10 @@ def run(case, *cmd, log=None, check=True):
 
 
 def prepare(case):
-    """slideFoamCase, blockMesh, 0.orig -> 0, setFields."""
+    """slideFoamCase, blockMesh, 0.orig -> 0 (the slide's initial extent is in 0.orig/alpha.slide)."""
     run(case, which("slideFoamCase"), "-case", ".")
     run(case, "blockMesh")
     shutil.copytree(os.path.join(case, "0.orig"), os.path.join(case, "0"), dirs_exist_ok=True)
-    run(case, "setFields")
 
 
 def run_slidefoam(case, processors=1, app="slideFoam"):

@@ -12,7 +12,7 @@ namespace dam
 DamControls DamControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "columns", "timeStep", "courant", "frictionalBase", "faceStability",
-                      "minShearLayerFraction", "viscosityQuadratic", "viscosityLinear", "writeFields",
+                      "minShearLayerFraction", "viscosityQuadratic", "viscosityLinear", "writeFields", "writeState",
                       "progressInterval"});
     DamControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -62,6 +62,7 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
         c.viscosityLinear = d.getScalarInRange("viscosityLinear", 0.0, 10.0, true, true, "artificial viscosity");
     }
     c.writeFields = d.getBool("writeFields", true);
+    c.writeState = d.getBool("writeState", true);
     if (d.found("progressInterval"))
     {
         c.progressInterval = d.getScalarInRange("progressInterval", 0.0, 1e6, true, true, "progress interval [s]");

@@ -11,6 +11,8 @@
 #include "damControls.H"
 #include "damIntegrator.H"
 #include "damOutput.H"
+#include "damRestart.H"
+#include "restartState.H"
 #include "outputContract.H"
 #include "writeSchedule.H"
 #include "scene.H"
@@ -53,12 +55,28 @@ int main(int argc, char** argv)
         const double rho = sc.slide.density;
         const double initialMass = rho*slide.totalArea();
 
-        output::RunoutLog log(caseDir, "slideDAM");
+        const scene::RunControl& rc = sc.control;
+        double t = rc.startTime;
+        long long step = 0;
+        output::WriteSchedule schedule(rc);
+        const double restartAt = output::restartTime(caseDir, rc, "slideDAM");
+        if (restartAt > 0.0)
+        {
+            const dam::RestartPoint at = dam::readState(output::statePath(caseDir, restartAt, "slideDAM"), slide);
+            t = at.time;
+            step = at.step;
+            schedule = output::WriteSchedule(rc, at.scheduleOrigin, at.scheduleIndex);
+            std::cout << "Restarting from " << output::statePath(caseDir, restartAt, "slideDAM") << " (t = " << t
+                      << " s, step " << step << ")\n" << std::endl;
+        }
+
+        // A restart keeps what was written up to its start and replaces the rest.
+        output::RunoutLog log(caseDir, "slideDAM", restartAt > 0.0, restartAt);
         std::unique_ptr<output::PvdSeries> series;
         if (controls.writeFields)
         {
             series.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideDAM"), "profile"));
-            series->truncateAfter(-1.0);   // a fresh run replaces an earlier series
+            series->truncateAfter(restartAt > 0.0 ? restartAt : -1.0);
         }
         auto write = [&](double t)
         {
@@ -74,15 +92,15 @@ int main(int argc, char** argv)
             }
             log.write(sample);
             if (series) series->add(t, dam::profile(slide, sc));
+            if (controls.writeState)
+            {
+                dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index()}, slide);
+            }
         };
 
-        const scene::RunControl& rc = sc.control;
-        double t = rc.startTime;
-        long long step = 0;
-        output::WriteSchedule schedule(rc);
-        output::Progress progress(rc.startTime, rc.endTime, controls.progressInterval);
-        write(t);
-        progress.report(t, step, true, "front = 0 m");
+        output::Progress progress(t, rc.endTime, controls.progressInterval);
+        if (restartAt <= 0.0) write(t);
+        progress.report(t, step, true, "front = " + std::to_string(slide.front()) + " m");
 
         bool atRest = false;
         while (schedule.running(t))
@@ -108,8 +126,8 @@ int main(int argc, char** argv)
             }
             if (schedule.writeDue(s))
             {
+                schedule.next();   // first, so that the state written holds the next write
                 write(t);
-                schedule.next();
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << slide.front() << " m  U_front = " << slide.U.back()
                       << " m/s";

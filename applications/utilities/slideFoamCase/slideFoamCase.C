@@ -2,18 +2,19 @@
 // (constant/sceneProperties, system/controlDict) and system/cfdDict, in the
 // same case directory, the OpenFOAM way:
 //   system/blockMeshDict    a 2D mesh along the planar base (x along the slope,
-//                           y normal to it), sized to the slide's reach
-//   system/setFieldsDict    the slide's initial extent (alpha.slide = 1)
+//                           y normal to it, gravity tilted), sized to the slide's reach
 //   system/fvSchemes, fvSolution, decomposeParDict
 //   constant/g              gravity in the slope's frame
 //   constant/transportProperties, turbulenceProperties
-//   0.orig/                 alpha.slide, U, p_rgh, xi with the base condition
+//   0.orig/                 alpha.slide (the slide's initial extent), U, p_rgh,
+//                           xi with the base condition
 //   <case>.foam             for ParaView's OpenFOAM reader
-// then: blockMesh; cp -r 0.orig 0; setFields; slideFoam (see the tutorials' Allrun).
+// then: blockMesh; cp -r 0.orig 0; slideFoam (runSlideFoam in the tutorials' Allrun).
 //
 //   slideFoamCase [-case dir] [-setting reference|fast]
 #include "application.H"
 #include "cfdControls.H"
+#include "meshLayout.H"
 #include "outputContract.H"
 #include "scene.H"
 
@@ -83,6 +84,18 @@ double damRearMin(const std::string& caseDir)
     return rearMin;
 }
 
+// boundaryField entries of alpha.slide and xi: zero gradient on walls, nothing
+// carried in where ambient fluid enters.
+std::string scalarBoundaries(const scene::Scene& sc)
+{
+    const std::string walls = sc.slide.rearWall ? "\"(base|upslope)\"" : "base";
+    const std::string open = sc.slide.rearWall ? "\"(top|downslope)\"" : "\"(top|downslope|upslope)\"";
+    return "    " + walls + "\n    {\n        type            zeroGradient;\n    }\n"
+           "    " + open + "\n    {\n        type            inletOutlet;\n        inletValue      uniform 0;\n"
+           "        value           uniform 0;\n    }\n"
+           "    frontAndBack\n    {\n        type            empty;\n    }\n";
+}
+
 std::string num(double v)
 {
     std::ostringstream os;
@@ -108,18 +121,13 @@ int main(int argc, char** argv)
 
         if (!sc.base.isPlanar())
         {
+            // Measured: on a polyline base meshed with vertical columns (sheared cells,
+            // gravity down) slideFoam's solution blew up within 3 steps at 3.4 deg.
             throw scene::InputError(caseDir + "/" + scene::Scene::sceneFile(), 0, "base.profile",
-                                    "slideFoamCase meshes planar bases only so far; a polyline base runs with "
-                                    "slideDAM and slideMPM");
+                                    "slideFoamCase meshes planar bases only; a polyline base runs with slideDAM "
+                                    "and slideMPM (validation/cfd/README.md)");
         }
-        if (sc.slide.shape != scene::SlideGeometry::Shape::rectangle)
-        {
-            throw scene::InputError(caseDir + "/" + scene::Scene::sceneFile(), 0, "slide.shape",
-                                    "slideFoamCase sets up rectangular slides only so far");
-        }
-
         const double H0 = sc.slide.height;
-        const double dx = H0/c.cellsPerHeight;
         double reach = c.reach;
         std::string reachFrom = "system/cfdDict reach";
         if (reach <= 0.0)
@@ -158,18 +166,9 @@ int main(int argc, char** argv)
             }
         }
 
-        // Cells aligned with the slide's rear so that its edges fall on cell faces where L0/dx is whole.
-        const int nBehind = int(std::ceil(behind/dx - 1e-9));
-        const int nSlide = int(std::ceil(sc.slide.length/dx - 1e-9));
-        const int nAhead = int(std::ceil(reach/dx - 1e-9));
-        const int nx = nBehind + nSlide + nAhead;
-        const int ny = int(std::ceil(c.heightRatio*c.cellsPerHeight - 1e-9));
-        const double x0 = sc.slide.rearPosition - nBehind*dx;
-        const double x1 = x0 + nx*dx;
-        const double y1 = ny*dx;
-        const double cells = double(nx)*ny;
-        output::checkMemory(static_cast<unsigned long long>(cells*2000.0), std::to_string(nx) + " x "
-                            + std::to_string(ny) + " cells", cfdFile, 0, "cellsPerHeight");
+        const cfd::MeshLayout mesh = cfd::MeshLayout::build(sc, c, behind, reach);
+        output::checkMemory(static_cast<unsigned long long>(double(mesh.nCells())*2000.0),
+                            std::to_string(mesh.nCells()) + " cells", cfdFile, 0, "cellsPerHeight");
 
         const bool water = sc.ambient.phase == scene::Ambient::Phase::water;
         // In water the slide carries its full density and buoyancy comes from the
@@ -180,10 +179,9 @@ int main(int argc, char** argv)
         const double muMax = sc.rheology.strength(creep, 0.0)/creep;
 
         std::cout << sc.describe() << "\nCFD set-up: " << c.describe() << "\n"
-                  << "  mesh " << nx << " x " << ny << " = " << long(cells) << " cells of " << dx << " m, x in ["
-                  << x0 << ", " << x1 << "] m along the base, height " << y1 << " m\n"
-                  << "  reach ahead of the front " << nAhead*dx << " m (" << reachFrom << ")\n"
-                  << "  mesh behind the rear " << nBehind*dx << " m (" << behindFrom << ")\n"
+                  << "  mesh " << mesh.describe() << "\n"
+                  << "  reach ahead of the front " << reach << " m (" << reachFrom << ")\n"
+                  << "  mesh behind the rear " << behind << " m (" << behindFrom << ")\n"
                   << "  slide density " << rhoSlide << " kg/m3 in a " << (water ? "water" : "light") << " ambient of "
                   << sc.ambient.density << " kg/m3\n"
                   << "  plug creep rate " << creep << " 1/s: " << (c.regularisation == "cap"
@@ -192,41 +190,24 @@ int main(int argc, char** argv)
         mkdir((caseDir + "/0.orig").c_str(), 0755);
         const std::string rearPatchType = sc.slide.rearWall ? "wall" : "patch";
 
-        // --- mesh
+        // --- mesh and the slide's initial extent
+        writeFile(caseDir + "/system/blockMeshDict", header("dictionary", "blockMeshDict", "system")
+                  + mesh.blockMeshDict(sc.slide.rearWall ? "wall" : "patch"));
         {
+            const std::vector<double> alpha = mesh.slideFraction(sc);
             std::ostringstream os;
-            os << header("dictionary", "blockMeshDict", "system") << "scale 1;\n\nvertices\n(\n";
-            const double z = dx;
-            for (double zz : {0.0, z})
-            {
-                os << "    (" << num(x0) << " 0 " << num(zz) << ")\n    (" << num(x1) << " 0 " << num(zz) << ")\n"
-                   << "    (" << num(x1) << " " << num(y1) << " " << num(zz) << ")\n    (" << num(x0) << " "
-                   << num(y1) << " " << num(zz) << ")\n";
-            }
-            os << ");\n\nblocks\n(\n    hex (0 1 2 3 4 5 6 7) (" << nx << " " << ny << " 1) simpleGrading (1 1 1)\n);\n\n"
-               << "edges\n(\n);\n\nboundary\n(\n"
-               << "    base\n    {\n        type wall;\n        faces ((0 1 5 4));\n    }\n"
-               << "    top\n    {\n        type patch;\n        faces ((3 7 6 2));\n    }\n"
-               << "    upslope\n    {\n        type " << rearPatchType << ";\n        faces ((0 4 7 3));\n    }\n"
-               << "    downslope\n    {\n        type patch;\n        faces ((1 2 6 5));\n    }\n"
-               << "    frontAndBack\n    {\n        type empty;\n        faces ((0 3 2 1) (4 5 6 7));\n    }\n"
-               << ");\n";
-            writeFile(caseDir + "/system/blockMeshDict", os.str());
-        }
-        {
-            std::ostringstream os;
-            os << header("dictionary", "setFieldsDict", "system")
-               << "defaultFieldValues\n(\n    volScalarFieldValue alpha.slide 0\n);\n\nregions\n(\n"
-               << "    boxToCell\n    {\n        box (" << num(sc.slide.rearPosition) << " 0 -1) ("
-               << num(sc.slide.frontPosition()) << " " << num(H0) << " 1);\n"
-               << "        fieldValues\n        (\n            volScalarFieldValue alpha.slide 1\n        );\n    }\n);\n";
-            writeFile(caseDir + "/system/setFieldsDict", os.str());
+            os << header("volScalarField", "alpha.slide", "0") << "dimensions      [0 0 0 0 0 0 0];\n\n"
+               << "// 1 in the cells whose centre lies in the slide (constant/sceneProperties)\n"
+               << "internalField   nonuniform List<scalar>\n" << alpha.size() << "\n(\n";
+            for (double a : alpha) os << a << "\n";
+            os << ")\n;\n\nboundaryField\n{\n" << scalarBoundaries(sc) << "}\n";
+            writeFile(caseDir + "/0.orig/alpha.slide", os.str());
         }
         // --- physics
         {
             std::ostringstream os;
-            os << header("uniformDimensionedVectorField", "g", "constant")
-               << "// planar base at " << num(theta*180.0/pi) << " deg: x along the slope, y normal to it\n"
+            os << header("uniformDimensionedVectorField", "g", "constant");
+            os << "// planar base at " << num(theta*180.0/pi) << " deg: x along the slope, y normal to it\n"
                << "dimensions      [0 1 -2 0 0 0 0];\nvalue           (" << num(sc.g*std::sin(theta)) << " "
                << num(-sc.g*std::cos(theta)) << " 0);\n";
             writeFile(caseDir + "/constant/g", os.str());
@@ -279,17 +260,9 @@ int main(int argc, char** argv)
                << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
             writeFile(caseDir + "/0.orig/p_rgh", os.str());
         }
-        for (const std::string name : {"alpha.slide", "xi"})
-        {
-            std::ostringstream os;
-            os << header("volScalarField", name, "0") << "dimensions      [0 0 0 0 0 0 0];\n\n"
-               << "internalField   uniform 0;\n\nboundaryField\n{\n"
-               << "    " << openOrWall << "\n    {\n        type            zeroGradient;\n    }\n"
-               << "    " << openPatches << "\n    {\n        type            inletOutlet;\n"
-               << "        inletValue      uniform 0;\n        value           uniform 0;\n    }\n"
-               << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
-            writeFile(caseDir + "/0.orig/" + name, os.str());
-        }
+        writeFile(caseDir + "/0.orig/xi", header("volScalarField", "xi", "0")
+                  + "dimensions      [0 0 0 0 0 0 0];\n\ninternalField   uniform 0;\n\nboundaryField\n{\n"
+                  + scalarBoundaries(sc) + "}\n");
         // --- numerics
         writeFile(caseDir + "/system/fvSchemes", header("dictionary", "fvSchemes", "system") +
 R"(ddtSchemes
@@ -397,7 +370,7 @@ relaxationFactors
             writeFile(caseDir + "/system/decomposeParDict", os.str());
         }
         writeFile(caseDir + "/" + (sc.caseName.empty() ? std::string("case") : sc.caseName) + ".foam", "");
-        std::cout << "Wrote system/{blockMeshDict,setFieldsDict,fvSchemes,fvSolution,decomposeParDict}, "
+        std::cout << "Wrote system/{blockMeshDict,fvSchemes,fvSolution,decomposeParDict}, "
                   << "constant/{g,transportProperties,turbulenceProperties}, 0.orig/{U,p_rgh,alpha.slide,xi}\n"
                   << "End" << std::endl;
         return 0;

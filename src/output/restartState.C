@@ -1,0 +1,141 @@
+#include "restartState.H"
+
+#include "dictionary.H"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace slide
+{
+namespace output
+{
+
+void StateFile::add(const std::string& key, const std::vector<double>& values)
+{
+    if (!data_.count(key)) order_.push_back(key);
+    data_[key] = values;
+}
+
+void StateFile::write(const std::string& path) const
+{
+    fs::create_directories(fs::path(path).parent_path());
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream os(tmp);
+        if (!os) throw std::runtime_error("cannot write " + tmp);
+        os << "// SlideFoam restart state: key, count, values as hexadecimal floats\n";
+        char buf[64];
+        for (const std::string& key : order_)
+        {
+            const std::vector<double>& v = data_.at(key);
+            os << key << ' ' << v.size() << '\n';
+            for (double x : v)
+            {
+                std::snprintf(buf, sizeof buf, "%a\n", x);
+                os << buf;
+            }
+        }
+        if (!os) throw std::runtime_error("cannot write " + tmp);
+    }
+    fs::rename(tmp, path);
+}
+
+StateFile StateFile::read(const std::string& path)
+{
+    std::ifstream is(path);
+    if (!is) throw scene::InputError(path, 0, "", "no restart state: the file cannot be read");
+    StateFile f;
+    f.path_ = path;
+    std::string line;
+    int lineNo = 0;
+    std::getline(is, line);
+    ++lineNo;
+    std::string key;
+    std::size_t n = 0;
+    while (is >> key >> n)
+    {
+        ++lineNo;
+        std::vector<double> v(n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            std::string word;
+            if (!(is >> word)) throw scene::InputError(path, lineNo, key, "truncated restart state");
+            ++lineNo;
+            char* end = nullptr;
+            v[i] = std::strtod(word.c_str(), &end);
+            if (end == word.c_str() || *end != '\0')
+            {
+                throw scene::InputError(path, lineNo, key, "not a number: '" + word + "'");
+            }
+        }
+        f.add(key, v);
+    }
+    if (!is.eof()) throw scene::InputError(path, lineNo, key, "unreadable restart state after this entry");
+    return f;
+}
+
+const std::vector<double>& StateFile::vector(const std::string& key) const
+{
+    const auto it = data_.find(key);
+    if (it == data_.end()) throw scene::InputError(path_, 0, key, "missing from the restart state");
+    return it->second;
+}
+
+double StateFile::scalar(const std::string& key) const
+{
+    const std::vector<double>& v = vector(key);
+    if (v.size() != 1) throw scene::InputError(path_, 0, key, "expected one value in the restart state");
+    return v[0];
+}
+
+std::string timeName(double t)
+{
+    // As OpenFOAM names time directories (general format, here 10 digits): the
+    // exact time is inside the state file.
+    std::ostringstream os;
+    os.precision(10);
+    os << t;
+    return os.str();
+}
+
+std::string statePath(const std::string& caseDir, double t, const std::string& method)
+{
+    return (fs::path(caseDir)/timeName(t)/(method + ".state")).string();
+}
+
+double restartTime(const std::string& caseDir, const scene::RunControl& rc, const std::string& method)
+{
+    if (rc.startFromLatest)
+    {
+        double latest = -1.0;
+        std::error_code ec;
+        for (const auto& e : fs::directory_iterator(caseDir, ec))
+        {
+            if (!e.is_directory()) continue;
+            const std::string name = e.path().filename().string();
+            char* end = nullptr;
+            const double t = std::strtod(name.c_str(), &end);
+            if (end == name.c_str() || *end != '\0' || !std::isfinite(t)) continue;
+            if (t > latest && t < rc.endTime && fs::exists(e.path()/(method + ".state"))) latest = t;
+        }
+        return latest > 0.0 ? latest : -1.0;
+    }
+    if (rc.startTime <= 0.0) return -1.0;
+    const std::string path = statePath(caseDir, rc.startTime, method);
+    if (!fs::exists(path))
+    {
+        scene::Dictionary::readFile((fs::path(caseDir)/scene::Scene::controlFile()).string())
+            .fail("startTime", "no " + method + " state to start from at " + timeName(rc.startTime) + " s ("
+                  + path + " is missing); use startFrom latestTime or a written time");
+    }
+    return rc.startTime;
+}
+
+} // namespace output
+} // namespace slide
