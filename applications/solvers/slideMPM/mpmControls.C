@@ -12,7 +12,8 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "writeFields", "progressInterval"});
+                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "writeFields", "writeState",
+                      "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
     if (c.setting == "fast")
@@ -63,6 +64,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
     }
     c.writeFields = d.getBool("writeFields", true);
+    c.writeState = d.getBool("writeState", true);
     if (d.found("progressInterval"))
     {
         c.progressInterval = d.getScalarInRange("progressInterval", 0.0, 1e6, true, true, "progress interval [s]");

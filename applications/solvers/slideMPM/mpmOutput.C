@@ -150,6 +150,15 @@ double median(std::vector<double> v)
 
 } // namespace
 
+const std::vector<std::string>& mechanismNames()
+{
+    static const std::vector<std::string> names
+    {
+        "viscous elongation", "block sliding", "spreading (horsts and grabens)", "breakaway"
+    };
+    return names;
+}
+
 Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const double H0, const double g,
                           const double cellSize)
 {
@@ -232,10 +241,11 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
     m.shearBand = (xb > 0.5 && m.basalStrainRatio > 3.0) ? "along the base"
                 : (m.grabens > 0 ? "in the body" : "none");
 
-    if (m.bodies > 1) m.name = "breakaway";
-    else if (m.grabens >= 2) m.name = "spreading (horsts and grabens)";
-    else if (std::fabs(V) > 0.1*std::sqrt(g*H0) && m.basalSlipRatio > 0.8) m.name = "block sliding";
-    else m.name = "viscous elongation";
+    const std::vector<std::string>& names = mechanismNames();
+    if (m.bodies > 1) m.name = names[3];
+    else if (m.grabens >= 2) m.name = names[2];
+    else if (std::fabs(V) > 0.1*std::sqrt(g*H0) && m.basalSlipRatio > 0.8) m.name = names[1];
+    else m.name = names[0];
     return m;
 }
 

@@ -14,6 +14,8 @@
 #include "materialPoints.H"
 #include "mpmControls.H"
 #include "mpmOutput.H"
+#include "mpmRestart.H"
+#include "restartState.H"
 #include "outputContract.H"
 #include "writeSchedule.H"
 #include "scene.H"
@@ -83,8 +85,8 @@ int main(int argc, char** argv)
                   << "Backend: " << backend << "\n" << std::endl;
 
         mpm::HostPoints initial(points);
-        const double initialFront = frame.level.arcLength(initial.frontX());
-        const double initialMass = initial.totalMass();
+        double initialFront = frame.level.arcLength(initial.frontX());
+        double initialMass = initial.totalMass();
         double highest = -1e300;   // elevation of the highest particle at the start
         for (int p = 0; p < initial.count; ++p)
         {
@@ -93,36 +95,60 @@ int main(int argc, char** argv)
             highest = std::max(highest, Z);
         }
 
-        output::RunoutLog log(caseDir, "slideMPM");
-        std::unique_ptr<output::PvdSeries> series;
-        if (controls.writeFields)
-        {
-            series.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideMPM"), "particles"));
-            series->truncateAfter(-1.0);
-        }
-        output::RunoutSample last;
-        auto write = [&](double t)
-        {
-            const mpm::HostPoints hp(points);
-            last = mpm::runoutSample(hp, frame, t, initialFront, d);
-            log.write(last);
-            if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
-            return hp;
-        };
-
         const scene::RunControl& rc = sc.control;
         double t = rc.startTime;
         long long step = 0;
         output::WriteSchedule schedule(rc);
-        output::Progress progress(rc.startTime, rc.endTime, controls.progressInterval);
-        write(t);
-        progress.report(t, step, true, "front = 0 m");
-        mpm::StepStatistics stats = mpm::TimeIntegrator::statistics(points);
+        std::vector<std::pair<double, std::string>> mechanisms;
+        const double restartAt = output::restartTime(caseDir, rc, "slideMPM");
+        std::unique_ptr<mpm::StepStatistics> restartStats;
+        if (restartAt > 0.0)
+        {
+            const std::string path = output::statePath(caseDir, restartAt, "slideMPM");
+            const mpm::RestartPoint at = mpm::readState(path, points);
+            t = at.time;
+            step = at.step;
+            schedule = output::WriteSchedule(rc, at.scheduleOrigin, at.scheduleIndex);
+            initialFront = at.initialFront;
+            initialMass = at.initialMass;
+            highest = at.highest;
+            mechanisms = at.mechanisms;
+            restartStats.reset(new mpm::StepStatistics(at.stats));
+            std::cout << "Restarting from " << path << " (t = " << t << " s, step " << step << ")\n" << std::endl;
+        }
+
+        // A restart keeps what was written up to its start and replaces the rest.
+        output::RunoutLog log(caseDir, "slideMPM", restartAt > 0.0, restartAt);
+        std::unique_ptr<output::PvdSeries> series;
+        if (controls.writeFields)
+        {
+            series.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideMPM"), "particles"));
+            series->truncateAfter(restartAt > 0.0 ? restartAt : -1.0);
+        }
+        mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points);
+        output::RunoutSample last;
+        auto write = [&](double t, bool logRow = true)
+        {
+            const mpm::HostPoints hp(points);
+            last = mpm::runoutSample(hp, frame, t, initialFront, d);
+            if (!logRow) return hp;
+            log.write(last);
+            if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
+            if (controls.writeState)
+            {
+                mpm::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), initialFront, initialMass,
+                                          highest, mechanisms, stats}, points);
+            }
+            return hp;
+        };
+
+        output::Progress progress(t, rc.endTime, controls.progressInterval);
+        write(t, restartAt <= 0.0);   // a restart only needs `last`: its row is in runout.dat
+        progress.report(t, step, true, "front = " + std::to_string(last.front) + " m");
         const unsigned long long gridBudget = output::availableMemoryBytes() > 0
             ? output::availableMemoryBytes()/2 : 8ull << 30;
 
         bool atRest = false;
-        std::vector<std::pair<double, std::string>> mechanisms;
         while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
@@ -167,9 +193,10 @@ int main(int argc, char** argv)
             }
             if (schedule.writeDue(s))
             {
-                const mpm::HostPoints hp = write(t);
-                mechanisms.emplace_back(t, mpm::detectMechanism(hp, frame, H0, sc.g, d).name);
+                // The schedule and the mechanism first, so that the state written holds them.
                 schedule.next();
+                mechanisms.emplace_back(t, mpm::detectMechanism(mpm::HostPoints(points), frame, H0, sc.g, d).name);
+                write(t);
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << last.front << " m  U_front = " << last.frontVelocity
                       << " m/s  |U|max = " << last.maxVelocity << " m/s";

@@ -34,19 +34,19 @@ struct GridToParticle
     {
         const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
         const int bx = st.bx, by = st.by;
-        const double xg = st.xg, yg = st.yg;
+        const double fx = st.fx, fy = st.fy;
         const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
         double vx = 0.0, vy = 0.0, B00 = 0.0, B01 = 0.0, B10 = 0.0, B11 = 0.0;
         double L00 = 0.0, L01 = 0.0, L10 = 0.0, L11 = 0.0;
         for (int a = 0; a < 3; ++a)
         {
-            const double dx = bx + a - xg;   // node - particle, in cells
+            const double dx = a - fx;   // node - particle, in cells
             for (int b = 0; b < 3; ++b)
             {
                 const double w = wx[a]*wy[b];
                 const double gx = dwx[a]*wy[b], gy = wx[a]*dwy[b];   // per cell
                 const double ux = vel(bx + a, by + b, 0), uy = vel(bx + a, by + b, 1);
-                const double dy = by + b - yg;
+                const double dy = b - fy;
                 vx += w*ux;
                 vy += w*uy;
                 B00 += w*ux*dx; B01 += w*ux*dy;
@@ -162,7 +162,7 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         auto acc = scatter.access();
         const Stencil st(x(p, 0), x(p, 1), xOrigin, d, i0, j0);
         const int bx = st.bx, by = st.by;
-        const double xg = st.xg, yg = st.yg;
+        const double fx = st.fx, fy = st.fy;
         const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
         const double mp_ = m(p), Vp = V(p), invD = 1.0/d;
         double sxx = sig(p, 0), syy = sig(p, 1);
@@ -182,12 +182,12 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         const double mx = mp_*(vx + dt*gX), my = mp_*(vy + dt*gY);   // momentum with gravity's impulse
         for (int a = 0; a < 3; ++a)
         {
-            const double dx = bx + a - xg;   // node - particle, in cells
+            const double dx = a - fx;   // node - particle, in cells
             for (int b = 0; b < 3; ++b)
             {
                 const double w = wx[a]*wy[b];
                 const double gx = dwx[a]*wy[b], gy = wx[a]*dwy[b];   // times 1/d in S
-                const double dy = by + b - yg;
+                const double dy = b - fy;
                 const double mw = mp_*w;
                 const int i = bx + a, j = by + b;
                 acc(i, j, BackgroundGrid::mass) += mw;

@@ -123,9 +123,9 @@ int main(int argc, char** argv)
         {
             // Measured: on a polyline base meshed with vertical columns (sheared cells,
             // gravity down) slideFoam's solution blew up within 3 steps at 3.4 deg.
-            throw scene::InputError(caseDir + "/" + scene::Scene::sceneFile(), 0, "base.profile",
-                                    "slideFoamCase meshes planar bases only; a polyline base runs with slideDAM "
-                                    "and slideMPM (validation/cfd/README.md)");
+            scene::Dictionary::readFile(caseDir + "/" + scene::Scene::sceneFile()).subDict("base")
+                .fail("profile", "slideFoamCase meshes planar bases only; a polyline base runs with slideDAM "
+                      "and slideMPM (validation/cfd/README.md)");
         }
         const double H0 = sc.slide.height;
         double reach = c.reach;

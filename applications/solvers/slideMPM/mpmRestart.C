@@ -1,0 +1,157 @@
+#include "mpmRestart.H"
+
+#include "mpmOutput.H"
+#include "restartState.H"
+
+#include <Kokkos_Core.hpp>
+
+namespace slide
+{
+namespace mpm
+{
+
+namespace
+{
+
+template<class View>
+std::vector<double> flatten(const View& v)
+{
+    auto h = Kokkos::create_mirror(v);
+    Kokkos::deep_copy(h, v);
+    std::vector<double> out;
+    out.reserve(h.size());
+    for (std::size_t p = 0; p < h.extent(0); ++p)
+    {
+        for (std::size_t c = 0; c < h.extent(1); ++c) out.push_back(h(p, c));
+    }
+    return out;
+}
+
+std::vector<double> flatten(const ParticleScalar& v)
+{
+    auto h = Kokkos::create_mirror(v);
+    Kokkos::deep_copy(h, v);
+    return std::vector<double>(h.data(), h.data() + h.size());
+}
+
+template<class View>
+void fill(const output::StateFile& f, const std::string& path, const std::string& key, const View& v)
+{
+    const std::vector<double>& data = f.vector(key);
+    if (data.size() != v.size())
+    {
+        throw scene::InputError(path, 0, key, "expected " + std::to_string(v.size()) + " values, found "
+                                + std::to_string(data.size()));
+    }
+    auto h = Kokkos::create_mirror(v);
+    std::size_t k = 0;
+    for (std::size_t p = 0; p < h.extent(0); ++p)
+    {
+        for (std::size_t c = 0; c < h.extent(1); ++c) h(p, c) = data[k++];
+    }
+    Kokkos::deep_copy(v, h);
+}
+
+void fill(const output::StateFile& f, const std::string& path, const std::string& key, const ParticleScalar& v)
+{
+    const std::vector<double>& data = f.vector(key);
+    if (data.size() != v.size())
+    {
+        throw scene::InputError(path, 0, key, "expected " + std::to_string(v.size()) + " values, found "
+                                + std::to_string(data.size()));
+    }
+    auto h = Kokkos::create_mirror(v);
+    for (std::size_t p = 0; p < h.size(); ++p) h(p) = data[p];
+    Kokkos::deep_copy(v, h);
+}
+
+} // namespace
+
+void writeState(const std::string& caseDir, const RestartPoint& at, const MaterialPoints& mp)
+{
+    output::StateFile f;
+    f.add("time", at.time);
+    f.add("step", static_cast<double>(at.step));
+    f.add("scheduleOrigin", at.scheduleOrigin);
+    f.add("scheduleIndex", static_cast<double>(at.scheduleIndex));
+    f.add("initialFront", at.initialFront);
+    f.add("initialMass", at.initialMass);
+    f.add("highest", at.highest);
+    std::vector<double> mechTimes, mechCodes;
+    for (const auto& m : at.mechanisms)
+    {
+        mechTimes.push_back(m.first);
+        std::size_t code = 0;
+        while (code < mechanismNames().size() && mechanismNames()[code] != m.second) ++code;
+        mechCodes.push_back(static_cast<double>(code));
+    }
+    f.add("mechanismTimes", mechTimes);
+    f.add("mechanismCodes", mechCodes);
+    f.add("stats", {at.stats.xmin, at.stats.xmax, at.stats.ymin, at.stats.ymax, at.stats.maxSpeed,
+                    at.stats.kineticEnergy, at.stats.finite ? 1.0 : 0.0});
+    f.add("count", static_cast<double>(mp.count));
+    f.add("spacing", mp.spacing);
+    f.add("position", flatten(mp.position));
+    f.add("velocity", flatten(mp.velocity));
+    f.add("affine", flatten(mp.affine));
+    f.add("velocityGradient", flatten(mp.velocityGradient));
+    f.add("stress", flatten(mp.stress));
+    f.add("mass", flatten(mp.mass));
+    f.add("volume", flatten(mp.volume));
+    f.add("plasticShearStrain", flatten(mp.plasticShearStrain));
+    f.add("strength", flatten(mp.strength));
+    f.add("shearStrainRate", flatten(mp.shearStrainRate));
+    f.add("plasticShearStrainRate", flatten(mp.plasticShearStrainRate));
+    f.add("dilatation", flatten(mp.dilatation));
+    f.write(output::statePath(caseDir, at.time, "slideMPM"));
+}
+
+RestartPoint readState(const std::string& path, MaterialPoints& mp)
+{
+    const output::StateFile f = output::StateFile::read(path);
+    const double count = f.scalar("count");
+    if (!(count >= 1.0 && count < 2e9)) throw scene::InputError(path, 0, "count", "not a particle count");
+    mp.allocate(static_cast<int>(count));
+    mp.spacing = f.scalar("spacing");
+    fill(f, path, "position", mp.position);
+    fill(f, path, "velocity", mp.velocity);
+    fill(f, path, "affine", mp.affine);
+    fill(f, path, "velocityGradient", mp.velocityGradient);
+    fill(f, path, "stress", mp.stress);
+    fill(f, path, "mass", mp.mass);
+    fill(f, path, "volume", mp.volume);
+    fill(f, path, "plasticShearStrain", mp.plasticShearStrain);
+    fill(f, path, "strength", mp.strength);
+    fill(f, path, "shearStrainRate", mp.shearStrainRate);
+    fill(f, path, "plasticShearStrainRate", mp.plasticShearStrainRate);
+    fill(f, path, "dilatation", mp.dilatation);
+
+    RestartPoint at;
+    at.time = f.scalar("time");
+    at.step = static_cast<long long>(f.scalar("step"));
+    at.scheduleOrigin = f.scalar("scheduleOrigin");
+    at.scheduleIndex = static_cast<long long>(f.scalar("scheduleIndex"));
+    at.initialFront = f.scalar("initialFront");
+    at.initialMass = f.scalar("initialMass");
+    at.highest = f.scalar("highest");
+    const std::vector<double>& st = f.vector("stats");
+    if (st.size() != 7) throw scene::InputError(path, 0, "stats", "expected 7 values");
+    at.stats.xmin = st[0];
+    at.stats.xmax = st[1];
+    at.stats.ymin = st[2];
+    at.stats.ymax = st[3];
+    at.stats.maxSpeed = st[4];
+    at.stats.kineticEnergy = st[5];
+    at.stats.finite = st[6] != 0.0;
+    const std::vector<double>& times = f.vector("mechanismTimes");
+    const std::vector<double>& codes = f.vector("mechanismCodes");
+    for (std::size_t k = 0; k < times.size() && k < codes.size(); ++k)
+    {
+        const std::size_t c = static_cast<std::size_t>(codes[k]);
+        at.mechanisms.emplace_back(times[k], c < mechanismNames().size() ? mechanismNames()[c] : "unknown");
+    }
+    return at;
+}
+
+} // namespace mpm
+} // namespace slide
