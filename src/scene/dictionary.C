@@ -199,8 +199,7 @@ private:
                 const double v = std::strtod(t.text.c_str(), &end);
                 if (end && *end == '\0')
                 {
-                    if (errno == ERANGE && std::fabs(v) > 1.0)
-                        fail(line, "", "number '" + t.text + "' is out of the range of a double");
+                    // An overflow stays an infinite number, refused with its key where it is read.
                     t.kind = Token::Kind::number;
                     t.number = v;
                 }
@@ -384,8 +383,20 @@ Dictionary Dictionary::readFile(const std::string& path)
     return parse(text, path);
 }
 
+FloatingPointTrapsOff::FloatingPointTrapsOff()
+{
+    std::feholdexcept(&saved_);
+}
+
+FloatingPointTrapsOff::~FloatingPointTrapsOff()
+{
+    std::feclearexcept(FE_ALL_EXCEPT);
+    std::fesetenv(&saved_);
+}
+
 Dictionary Dictionary::parse(const std::string& text, const std::string& fileName)
 {
+    const FloatingPointTrapsOff noTraps;
     DictionaryParser p(text, fileName);
     return p.parseTop();
 }
@@ -402,6 +413,12 @@ const Dictionary::Entry* Dictionary::lookup(const std::string& key) const
 bool Dictionary::found(const std::string& key) const
 {
     return lookup(key) != nullptr;
+}
+
+int Dictionary::lineOf(const std::string& key) const
+{
+    const Entry* e = lookup(key);
+    return e ? e->line : line_;
 }
 
 bool Dictionary::isDict(const std::string& key) const
@@ -454,7 +471,10 @@ double Dictionary::getScalar(const std::string& key) const
 {
     const Token& t = singleToken(key);
     if (t.kind != Token::Kind::number) fail(key, "expected a number, got " + t.describe());
-    if (!std::isfinite(t.number)) fail(key, "expected a finite number, got " + t.text);
+    if (!std::isfinite(t.number))
+    {
+        fail(key, "expected a finite number, got " + t.text + (std::isinf(t.number) ? " (beyond a double's range)" : ""));
+    }
     return t.number;
 }
 

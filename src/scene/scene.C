@@ -262,6 +262,7 @@ std::string Interface::typeName() const
 
 Scene Scene::read(const std::string& caseDir)
 {
+    const FloatingPointTrapsOff noTraps;
     Scene sc;
     sc.caseDir = caseDir.empty() ? "." : caseDir;
     sc.caseName = baseName(sc.caseDir);

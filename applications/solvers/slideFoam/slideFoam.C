@@ -78,13 +78,8 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    #include "checkScene.H"
     #include "createTime.H"
-
-    // Nothing from an earlier run may claim a runout this run has not produced.
-    if (Pstream::master())
-    {
-        slide::output::prepareOutput(runTime.globalPath(), "slideFoam");
-    }
     #include "readSlideRheology.H"
 
     #include "createDynamicFvMesh.H"
@@ -102,6 +97,13 @@ int main(int argc, char *argv[])
     {
         #include "CourantNo.H"
         #include "setInitialDeltaT.H"
+    }
+
+    // Nothing from an earlier run may claim a runout this run has not produced;
+    // removed only now that the case has been read, so a refused case loses nothing.
+    if (Pstream::master())
+    {
+        slide::output::prepareOutput(runTime.globalPath(), "slideFoam");
     }
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

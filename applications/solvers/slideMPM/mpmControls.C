@@ -22,6 +22,8 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.cellsPerHeight = 20;
         c.particlesPerCell = 2;
     }
+    c.resolutionKey = d.found("cellsPerHeight") ? "cellsPerHeight" : "setting";
+    c.resolutionLine = d.lineOf(c.resolutionKey);
     if (d.found("cellsPerHeight"))
     {
         c.cellsPerHeight = d.getLabel("cellsPerHeight");

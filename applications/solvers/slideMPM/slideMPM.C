@@ -55,7 +55,6 @@ int main(int argc, char** argv)
     {
         args.printBanner();
         const std::string caseDir = args.caseDir();
-        output::prepareOutput(caseDir, "slideMPM");
         const scene::Scene sc = scene::Scene::read(caseDir);
         const mpm::MpmControls controls =
             mpm::MpmControls::read(scene::readMethodDict(caseDir, "mpmDict"), args.get("setting"));
@@ -67,7 +66,8 @@ int main(int argc, char** argv)
             const long long n = mpm::MaterialPoints::estimateCount(sc, d, ppc);
             output::checkMemory(n*mpm::MaterialPoints::bytesPerParticle
                                 + mpm::BackgroundGrid::bytesFor(4ll*n/(ppc*ppc) + 1000),
-                                std::to_string(n) + " particles", caseDir + "/system/mpmDict", 0, "cellsPerHeight");
+                                std::to_string(n) + " particles", caseDir + "/system/mpmDict",
+                                controls.resolutionLine, controls.resolutionKey);
         }
         const mpm::BaseFrame frame = mpm::BaseFrame::fromScene(sc);
         const mpm::UndrainedClay clay = mpm::UndrainedClay::fromYoungs(
@@ -117,6 +117,9 @@ int main(int argc, char** argv)
             std::cout << "Restarting from " << path << " (t = " << t << " s, step " << step << ")\n" << std::endl;
         }
 
+        // Only now, with the input read and checked, is an earlier run's summary removed:
+        // a refused scene loses nothing, and no old summary outlives a new run.
+        output::prepareOutput(caseDir, "slideMPM");
         // A restart keeps what was written up to its start and replaces the rest.
         output::RunoutLog log(caseDir, "slideMPM", restartAt > 0.0, restartAt);
         std::unique_ptr<output::PvdSeries> series;

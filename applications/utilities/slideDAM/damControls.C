@@ -23,6 +23,8 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
         c.timeStep = TimeStep::adaptive;
         c.courant = 0.5;
     }
+    c.resolutionKey = d.found("columns") ? "columns" : "setting";
+    c.resolutionLine = d.lineOf(c.resolutionKey);
     if (d.found("columns"))
     {
         c.columns = d.getLabel("columns");

@@ -35,16 +35,14 @@ int main(int argc, char** argv)
     {
         args.printBanner();
         const std::string caseDir = args.caseDir();
-        output::prepareOutput(caseDir, "slideDAM");
-
         const scene::Scene sc = scene::Scene::read(caseDir);
         const dam::DamControls controls =
             dam::DamControls::read(scene::readMethodDict(caseDir, "damDict"), args.get("setting"));
         {
             // Memory: nine doubles per node and a few per column.
             const unsigned long long bytes = 16ull*8ull*(controls.columns + 1ull);
-            output::checkMemory(bytes, std::to_string(controls.columns) + " columns", caseDir + "/system/damDict", 0,
-                                "columns");
+            output::checkMemory(bytes, std::to_string(controls.columns) + " columns", caseDir + "/system/damDict",
+                                controls.resolutionLine, controls.resolutionKey);
         }
 
         std::cout << sc.describe();
@@ -70,6 +68,9 @@ int main(int argc, char** argv)
                       << " s, step " << step << ")\n" << std::endl;
         }
 
+        // Only now, with the input read and checked, is an earlier run's summary removed:
+        // a refused scene loses nothing, and no old summary outlives a new run.
+        output::prepareOutput(caseDir, "slideDAM");
         // A restart keeps what was written up to its start and replaces the rest.
         output::RunoutLog log(caseDir, "slideDAM", restartAt > 0.0, restartAt);
         std::unique_ptr<output::PvdSeries> series;

@@ -14,6 +14,8 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
     c.cellsPerHeight = c.setting == "reference" ? 60 : 20;
+    c.resolutionKey = d.found("cellsPerHeight") ? "cellsPerHeight" : "setting";
+    c.resolutionLine = d.lineOf(c.resolutionKey);
     if (d.found("cellsPerHeight"))
     {
         c.cellsPerHeight = d.getLabel("cellsPerHeight");

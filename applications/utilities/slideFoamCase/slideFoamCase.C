@@ -168,7 +168,8 @@ int main(int argc, char** argv)
 
         const cfd::MeshLayout mesh = cfd::MeshLayout::build(sc, c, behind, reach);
         output::checkMemory(static_cast<unsigned long long>(double(mesh.nCells())*2000.0),
-                            std::to_string(mesh.nCells()) + " cells", cfdFile, 0, "cellsPerHeight");
+                            std::to_string(mesh.nCells()) + " cells", cfdFile,
+                            c.resolutionLine, c.resolutionKey);
 
         const bool water = sc.ambient.phase == scene::Ambient::Phase::water;
         // In water the slide carries its full density and buoyancy comes from the

@@ -109,7 +109,6 @@ TEST(Dictionary, SyntaxErrorsAreReportedWithLines)
         {"a $b;\n", 1, "not supported"},
         {"a 1;\na 2;\n", 2, "duplicate key"},
         {"a;\n", 1, "no value"},
-        {"a 1e999;\n", 1, "out of the range"},
         {"(1 2);\n", 1, "expected a key"},
         {"a [1 x] 2;\n", 1, "dimension set"},
         {"a \x01;\n", 1, "unexpected character"},
@@ -124,8 +123,9 @@ TEST(Dictionary, SyntaxErrorsAreReportedWithLines)
 
 TEST(Dictionary, NonFiniteNumbersAreRejected)
 {
-    const Dictionary d = Dictionary::parse("a nan;\nb inf;\nc -inf;\n", "f");
-    for (const char* k : {"a", "b", "c"})
+    // 1e999 overflows a double: refused where it is read, naming its key.
+    const Dictionary d = Dictionary::parse("a nan;\nb inf;\nc -inf;\nd 1e999;\n", "f");
+    for (const char* k : {"a", "b", "c", "d"})
     {
         const InputError e = expectError([&] { d.getScalar(k); });
         EXPECT_EQ(e.key(), k);
