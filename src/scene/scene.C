@@ -263,11 +263,19 @@ std::string Interface::typeName() const
 Scene Scene::read(const std::string& caseDir)
 {
     const FloatingPointTrapsOff noTraps;
+    const std::string dir = caseDir.empty() ? "." : caseDir;
+    const Dictionary d = Dictionary::readFile(joinPath(dir, sceneFile()));
+    const Dictionary c = Dictionary::readFile(joinPath(dir, controlFile()));
+    return fromDictionaries(d, c, dir);
+}
+
+Scene Scene::fromDictionaries(const Dictionary& d, const Dictionary& c, const std::string& caseDir)
+{
+    const FloatingPointTrapsOff noTraps;
     Scene sc;
     sc.caseDir = caseDir.empty() ? "." : caseDir;
     sc.caseName = baseName(sc.caseDir);
 
-    const Dictionary d = Dictionary::readFile(joinPath(sc.caseDir, sceneFile()));
     d.checkKnownKeys({"FoamFile", "title", "slide", "rheology", "base", "ambient", "g"});
     sc.title = d.getWord("title", sc.caseName);
     sc.g = d.getScalarInRange("g", 0.0, 100.0, false, true, "gravitational acceleration [m/s2]");
@@ -281,7 +289,6 @@ Scene Scene::read(const std::string& caseDir)
                                   + std::to_string(sc.slide.density) + " kg/m3)");
     }
 
-    const Dictionary c = Dictionary::readFile(joinPath(sc.caseDir, controlFile()));
     sc.control = readControl(c);
     return sc;
 }

@@ -56,8 +56,12 @@ CFDDICT = """// Cells of H0/10 = 0.5 m; the mesh reaches 1.3 x slideDAM's runout
 // of the front and 1.3 x its upslope spreading + 2 H0 behind the rear (slideDAM
 // runs first in Allrun). "setting reference" is H0/60, the paper's flume mesh:
 // 36 times the cells, far too many at this scale on a few cores.
+// The deposits of the weak cases thin to 0.5-1 m, one or two such cells: on the
+// base the cells are 4 times thinner (H0/40), graded up to H0/10 (Case 1 ran
+// past 409 m with uniform H0/10 cells and stopped at 341 m with this grading).
 setting         fast;
 cellsPerHeight  10;
+baseRefinement  4;
 """
 
 DAMDICT = """// 800 columns with the adaptive time step: converged in columns for these cases

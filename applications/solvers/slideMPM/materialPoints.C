@@ -182,5 +182,30 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
     return mp;
 }
 
+MaterialPoints::Located MaterialPoints::fastest() const
+{
+    using Reducer = Kokkos::MaxLoc<double, int>;
+    typename Reducer::value_type best;
+    const ParticleVector v = velocity;
+    Kokkos::parallel_reduce("fastestParticle", Kokkos::RangePolicy<ExecutionSpace>(0, count),
+        KOKKOS_LAMBDA(const int p, typename Reducer::value_type& b)
+        {
+            const double s2 = v(p, 0)*v(p, 0) + v(p, 1)*v(p, 1);
+            const double key = s2 == s2 ? s2 : 1e308;   // NaN ranks first
+            if (key > b.val) { b.val = key; b.loc = p; }
+        }, Reducer(best));
+    Located r;
+    if (best.loc < 0 || best.loc >= count) return r;
+    auto px = Kokkos::subview(position, best.loc, Kokkos::ALL());
+    auto pv = Kokkos::subview(velocity, best.loc, Kokkos::ALL());
+    auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), px);
+    auto hv = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pv);
+    r.index = best.loc;
+    r.x = hx(0);
+    r.y = hx(1);
+    r.speed = std::sqrt(hv(0)*hv(0) + hv(1)*hv(1));
+    return r;
+}
+
 } // namespace mpm
 } // namespace slide

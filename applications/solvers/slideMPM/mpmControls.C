@@ -11,7 +11,7 @@ namespace mpm
 
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
-    d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "youngsModulusRatio",
+    d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
                       "poissonRatio", "volumetricLocking", "transfer", "strainRate", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
@@ -43,6 +43,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         }
     }
     if (d.found("courant")) c.courant = d.getScalarInRange("courant", 0.0, 1.0, false, true, "Courant number");
+    if (d.found("deltaT")) c.deltaT = d.getScalarInRange("deltaT", 0.0, 1e6, false, true, "fixed time step [s]");
     if (d.found("youngsModulusRatio"))
     {
         c.youngsModulusRatio =
@@ -82,7 +83,9 @@ std::string MpmControls::describe() const
        << (transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
        << ", Eq. (1) at the " << (plasticStrainRate ? "plastic" : "total") << " shear strain rate"
-       << ", Courant " << courant << " (Eq. 6), E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
+       << ", Courant " << courant << " (Eq. 6)"
+       << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())
+       << ", E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
     return os.str();
 }
 

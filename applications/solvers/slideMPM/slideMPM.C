@@ -83,6 +83,11 @@ int main(int argc, char** argv)
                   << "    " << points.count << " particles, cell " << d << " m, elastic wave speed "
                   << integrator.waveSpeed() << " m/s, dt " << integrator.stableTimeStep(d, 0.0) << " s\n"
                   << "Backend: " << backend << "\n" << std::endl;
+        if (controls.deltaT > integrator.stableTimeStep(d, 0.0))
+        {
+            std::cout << "Warning: the fixed deltaT " << controls.deltaT << " s (system/mpmDict) exceeds the stable "
+                      << "time step " << integrator.stableTimeStep(d, 0.0) << " s (Eq. 6)\n" << std::endl;
+        }
 
         mpm::HostPoints initial(points);
         double initialFront = frame.level.arcLength(initial.frontX());
@@ -163,7 +168,7 @@ int main(int argc, char** argv)
                 throw output::BlowUp(t, "the particle cloud", "grid extent", os.str());
             }
             if (step > 0 && step % mpm::sortInterval == 0) points.sortByCell(grid);
-            const output::WriteSchedule::Step s = schedule.clip(t, integrator.stableTimeStep(d, stats.maxSpeed));
+            const output::WriteSchedule::Step s = schedule.clip(t, integrator.timeStep(d, stats.maxSpeed));
             const mpm::StepStatistics next = integrator.step(points, grid, s.dt);
             ++step;
             t = s.time;
@@ -177,7 +182,11 @@ int main(int argc, char** argv)
             if (!next.finite || next.maxSpeed > bound)
             {
                 std::ostringstream place, detail;
-                place << "the particles (last good front at s = " << last.front << " m from the initial front)";
+                const mpm::MaterialPoints::Located p = points.fastest();
+                double Xp, Zp;
+                frame.toGlobal(p.x, p.y, Xp, Zp);
+                place << "particle " << p.index << " at s = " << p.x << " m along the base, " << p.y
+                      << " m above it (x = " << Xp << ", z = " << Zp << " m)";
                 detail << (next.finite ? "particle speed " + std::to_string(next.maxSpeed)
                                              + " m/s exceeds the " + std::to_string(bound)
                                              + " m/s that gravity and the elastic waves can give"

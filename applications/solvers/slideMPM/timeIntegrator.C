@@ -438,7 +438,7 @@ void advanceTo(const TimeIntegrator& integrator, MaterialPoints& mp, BackgroundG
             throw std::runtime_error("advanceTo: the grid outgrew 8 GiB");
         }
         if (++steps % sortInterval == 0) mp.sortByCell(grid);
-        const double dt = std::min(integrator.stableTimeStep(grid.d, stats.maxSpeed), T - t);
+        const double dt = std::min(integrator.timeStep(grid.d, stats.maxSpeed), T - t);
         stats = integrator.step(mp, grid, dt);
         t += dt;
         if (!stats.finite) throw std::runtime_error("advanceTo: non-finite particle state");

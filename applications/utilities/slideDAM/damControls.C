@@ -11,7 +11,7 @@ namespace dam
 
 DamControls DamControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
-    d.checkKnownKeys({"FoamFile", "setting", "columns", "timeStep", "courant", "frictionalBase", "faceStability",
+    d.checkKnownKeys({"FoamFile", "setting", "columns", "timeStep", "courant", "deltaT", "frictionalBase", "faceStability",
                       "minShearLayerFraction", "viscosityQuadratic", "viscosityLinear", "writeFields", "writeState",
                       "progressInterval"});
     DamControls c;
@@ -39,6 +39,7 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
                                                                                  : TimeStep::adaptive;
     }
     if (d.found("courant")) c.courant = d.getScalarInRange("courant", 0.0, 1.0, false, true, "Courant number");
+    if (d.found("deltaT")) c.deltaT = d.getScalarInRange("deltaT", 0.0, 1e6, false, true, "fixed time step [s]");
     if (d.found("frictionalBase"))
     {
         c.frictionalBase = d.getWordOneOf("frictionalBase", {"enhanced", "original"}) == "enhanced"
@@ -78,6 +79,7 @@ std::string DamControls::describe() const
     os << "setting " << setting << ": " << columns << " columns, time step "
        << (timeStep == TimeStep::paper ? "paper (0.001 sqrt(b/g))" : "adaptive (Courant ")
        << (timeStep == TimeStep::paper ? "" : std::to_string(courant).substr(0, 4) + ")")
+       << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())
        << ", frictional base " << (frictionalBase == FrictionalBase::enhanced ? "enhanced (Eq. 5)" : "original (Eq. 4)")
        << ", face " << (faceStability == FaceStability::rankine ? "Rankine"
                               : faceStability == FaceStability::gate ? "hydrostatic above H_stability" : "hydrostatic") << ", min shear layer " << minShearLayerFraction << " D, artificial viscosity (" << viscosityQuadratic

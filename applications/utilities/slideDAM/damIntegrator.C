@@ -57,6 +57,12 @@ DamIntegrator::DamIntegrator(const scene::Scene& sc, const DamControls& controls
 
 double DamIntegrator::timeStep(const SlideColumns& s) const
 {
+    if (controls_.deltaT > 0.0) return controls_.deltaT;
+    return stableTimeStep(s);
+}
+
+double DamIntegrator::stableTimeStep(const SlideColumns& s) const
+{
     if (controls_.timeStep == DamControls::TimeStep::paper) return paperDt_;
     double dxMin = HUGE_VAL, speed = 0.0;
     const int N = s.nColumns();

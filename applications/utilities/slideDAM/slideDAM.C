@@ -104,8 +104,15 @@ int main(int argc, char** argv)
         progress.report(t, step, true, "front = " + std::to_string(slide.front()) + " m");
 
         bool atRest = false;
+        bool warnedFixedStep = false;
         while (schedule.running(t))
         {
+            if (controls.deltaT > 0.0 && !warnedFixedStep && controls.deltaT > integrator.stableTimeStep(slide))
+            {
+                std::cout << "Warning: the fixed deltaT " << controls.deltaT << " s (system/damDict) exceeds the stable "
+                          << "time step " << integrator.stableTimeStep(slide) << " s at t = " << t << " s\n";
+                warnedFixedStep = true;
+            }
             const double dtStable = integrator.timeStep(slide);
             if (!(dtStable > 1e-9*rc.writeInterval))
             {

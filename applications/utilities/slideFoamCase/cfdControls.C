@@ -10,7 +10,7 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "regularisation", "plugCreepRate", "processors"});
+                      "baseRefinement", "baseGrowth", "regularisation", "plugCreepRate", "processors"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
     c.cellsPerHeight = c.setting == "reference" ? 60 : 20;
@@ -34,6 +34,18 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.heightRatio = d.getScalarInRange("heightRatio", 1.05, 100.0, true, true, "mesh height / H0");
     }
+    if (d.found("baseRefinement"))
+    {
+        c.baseRefinement = d.getLabel("baseRefinement");
+        if (c.baseRefinement < 1 || c.baseRefinement > 64)
+        {
+            d.fail("baseRefinement", "must lie in [1, 64], got " + std::to_string(c.baseRefinement));
+        }
+    }
+    if (d.found("baseGrowth"))
+    {
+        c.baseGrowth = d.getScalarInRange("baseGrowth", 1.0, 2.0, false, true, "cell growth ratio away from the base");
+    }
     if (d.found("regularisation")) c.regularisation = d.getWordOneOf("regularisation", {"cap", "papanastasiou"});
     if (d.found("plugCreepRate"))
     {
@@ -53,7 +65,9 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 std::string CfdControls::describe() const
 {
     std::ostringstream os;
-    os << "setting " << setting << ", H0/" << cellsPerHeight << ", regularisation " << regularisation
+    os << "setting " << setting << ", H0/" << cellsPerHeight;
+    if (baseRefinement > 1) os << " (H0/" << cellsPerHeight*baseRefinement << " on the base)";
+    os << ", regularisation " << regularisation
        << ", processors " << processors;
     return os.str();
 }

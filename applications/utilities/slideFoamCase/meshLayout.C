@@ -33,8 +33,19 @@ MeshLayout MeshLayout::build(const scene::Scene& sc, const CfdControls& c, const
     const int nAhead = int(std::ceil(reach/dx - 1e-9));
     m.x_ = {sRear - nBehind*dx, sRear + (nSlide + nAhead)*dx};
     m.nx_ = nBehind + nSlide + nAhead;
-    m.ny_ = int(std::ceil(c.heightRatio*c.cellsPerHeight - 1e-9));
-    m.height_ = m.ny_*dx;
+    const double wanted = c.heightRatio*H0;
+    if (c.baseRefinement > 1)
+    {
+        // n graded cells from dx/r to dx at a ratio q = r^(1/(n-1)) <= baseGrowth.
+        const double r = c.baseRefinement;
+        m.nGraded_ = int(std::ceil(std::log(r)/std::log(c.baseGrowth) - 1e-9)) + 1;
+        const double q = std::pow(r, 1.0/(m.nGraded_ - 1));
+        m.gradedHeight_ = dx/r*(std::pow(q, m.nGraded_) - 1.0)/(q - 1.0);
+        m.refinement_ = r;
+    }
+    const int nUniform = std::max(1, int(std::ceil((wanted - m.gradedHeight_)/dx - 1e-9)));
+    m.ny_ = m.nGraded_ + nUniform;
+    m.height_ = m.gradedHeight_ + nUniform*dx;
     return m;
 }
 
@@ -46,30 +57,91 @@ long long MeshLayout::nCells() const
 std::string MeshLayout::describe() const
 {
     std::ostringstream os;
-    os << nx_ << " x " << ny_ << " = " << nCells() << " cells of " << depth_ << " m, x in [" << x_[0] << ", "
-       << x_[1] << "] m along the base, height " << height_ << " m";
+    os << nx_ << " x " << ny_ << " = " << nCells() << " cells of " << depth_ << " m";
+    if (nGraded_ > 0)
+    {
+        os << " (" << nGraded_ << " graded rows from " << depth_/refinement_ << " m on the base up to "
+           << gradedHeight_ << " m)";
+    }
+    os << ", x in [" << x_[0] << ", " << x_[1] << "] m along the base, height " << height_ << " m";
     return os.str();
 }
 
 std::string MeshLayout::blockMeshDict(const std::string& rearType) const
 {
+    // Vertices by level (bottom up), four per level: (x0, y, 0) (x1, y, 0) (x1, y, d) (x0, y, d).
+    std::vector<double> levels = {0.0};
+    if (nGraded_ > 0) levels.push_back(gradedHeight_);
+    levels.push_back(height_);
     std::ostringstream os;
     os << "scale 1;\n\nvertices\n(\n";
-    for (double z : {0.0, depth_})
+    for (double y : levels)
     {
-        os << "    (" << num(x_[0]) << " 0 " << num(z) << ")\n    (" << num(x_[1]) << " 0 " << num(z) << ")\n"
-           << "    (" << num(x_[1]) << " " << num(height_) << " " << num(z) << ")\n    (" << num(x_[0]) << " "
-           << num(height_) << " " << num(z) << ")\n";
+        os << "    (" << num(x_[0]) << " " << num(y) << " 0) (" << num(x_[1]) << " " << num(y) << " 0) ("
+           << num(x_[1]) << " " << num(y) << " " << num(depth_) << ") (" << num(x_[0]) << " " << num(y) << " "
+           << num(depth_) << ")\n";
     }
-    os << ");\n\nblocks\n(\n    hex (0 1 2 3 4 5 6 7) (" << nx_ << " " << ny_ << " 1) simpleGrading (1 1 1)\n);\n\n"
-       << "edges\n(\n);\n\nboundary\n(\n"
-       << "    base\n    {\n        type wall;\n        faces ((0 1 5 4));\n    }\n"
-       << "    top\n    {\n        type patch;\n        faces ((3 7 6 2));\n    }\n"
-       << "    upslope\n    {\n        type " << rearType << ";\n        faces ((0 4 7 3));\n    }\n"
-       << "    downslope\n    {\n        type patch;\n        faces ((1 2 6 5));\n    }\n"
-       << "    frontAndBack\n    {\n        type empty;\n        faces ((0 3 2 1) (4 5 6 7));\n    }\n"
+    // Block k spans levels k and k+1; hex order: bottom face (0 1 top-1 top-0), then its far copy.
+    auto v = [](int level, int k) { return 4*level + k; };
+    auto hex = [&](int l)
+    {
+        std::ostringstream h;
+        h << "hex (" << v(l, 0) << " " << v(l, 1) << " " << v(l + 1, 1) << " " << v(l + 1, 0) << " " << v(l, 3)
+          << " " << v(l, 2) << " " << v(l + 1, 2) << " " << v(l + 1, 3) << ")";
+        return h.str();
+    };
+    auto face = [&](int l, int a, int b) // a side face of block l between vertex columns a and b
+    {
+        std::ostringstream f;
+        f << "(" << v(l, a) << " " << v(l, b) << " " << v(l + 1, b) << " " << v(l + 1, a) << ")";
+        return f.str();
+    };
+    const int nBlocks = int(levels.size()) - 1;
+    os << ");\n\nblocks\n(\n";
+    for (int l = 0; l < nBlocks; ++l)
+    {
+        const bool graded = nGraded_ > 0 && l == 0;
+        os << "    " << hex(l) << " (" << nx_ << " " << (graded ? nGraded_ : ny_ - nGraded_) << " 1) simpleGrading (1 "
+           << num(graded ? refinement_ : 1.0) << " 1)\n";
+    }
+    std::string up, down, sides;
+    for (int l = 0; l < nBlocks; ++l)
+    {
+        up += " " + face(l, 0, 3);
+        down += " " + face(l, 1, 2);
+        sides += " (" + std::to_string(v(l, 0)) + " " + std::to_string(v(l + 1, 0)) + " " + std::to_string(v(l + 1, 1))
+                 + " " + std::to_string(v(l, 1)) + ") (" + std::to_string(v(l, 3)) + " " + std::to_string(v(l, 2))
+                 + " " + std::to_string(v(l + 1, 2)) + " " + std::to_string(v(l + 1, 3)) + ")";
+    }
+    const int t = nBlocks;
+    os << ");\n\nedges\n(\n);\n\nboundary\n(\n"
+       << "    base\n    {\n        type wall;\n        faces ((0 1 2 3));\n    }\n"
+       << "    top\n    {\n        type patch;\n        faces ((" << v(t, 0) << " " << v(t, 3) << " " << v(t, 2) << " "
+       << v(t, 1) << "));\n    }\n"
+       << "    upslope\n    {\n        type " << rearType << ";\n        faces (" << up << " );\n    }\n"
+       << "    downslope\n    {\n        type patch;\n        faces (" << down << " );\n    }\n"
+       << "    frontAndBack\n    {\n        type empty;\n        faces (" << sides << " );\n    }\n"
        << ");\n";
     return os.str();
+}
+
+std::vector<double> MeshLayout::cellCentreHeights() const
+{
+    std::vector<double> y;
+    double bottom = 0.0;
+    for (int j = 0; j < nGraded_; ++j)
+    {
+        const double q = nGraded_ > 1 ? std::pow(refinement_, 1.0/(nGraded_ - 1)) : 1.0;
+        const double h = depth_/refinement_*std::pow(q, j);
+        y.push_back(bottom + 0.5*h);
+        bottom += h;
+    }
+    const double h = (height_ - gradedHeight_)/(ny_ - nGraded_);
+    for (int j = nGraded_; j < ny_; ++j)
+    {
+        y.push_back(gradedHeight_ + (j - nGraded_ + 0.5)*h);
+    }
+    return y;
 }
 
 std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
@@ -78,9 +150,8 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
     std::vector<double> alpha;
     alpha.reserve(static_cast<std::size_t>(nCells()));
     const double dx = (x_[1] - x_[0])/nx_;
-    for (int j = 0; j < ny_; ++j)
+    for (const double normal : cellCentreHeights())
     {
-        const double normal = (j + 0.5)*height_/ny_;
         for (int i = 0; i < nx_; ++i)
         {
             alpha.push_back(normal < sc.slide.thickness(x_[0] + (i + 0.5)*dx) ? 1.0 : 0.0);

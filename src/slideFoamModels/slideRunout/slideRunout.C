@@ -205,8 +205,10 @@ bool Foam::functionObjects::slideRunout::execute()
         s.sample.front = sf - s0;
         s.sample.rear = sr - s0;
         s.sample.frontVelocity = colAV[front] > 0 ? colAVU[front]/colAV[front] : 0;
-        s.atDomainEnd = front == nCol - 1;
     }
+    // Slide on the base in the last column is leaving through the open downslope
+    // end, whether or not the (thin) front there still reaches alpha = 0.5.
+    s.atDomainEnd = nCol > 0 && baseAlpha[nCol - 1] >= 0.1;
     scalar hMax = 0;
     forAll(colAV, c) hMax = max(hMax, colAV[c]/columnArea_[c]);
     s.sample.maxVelocity = uMax;
