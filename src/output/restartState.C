@@ -137,5 +137,23 @@ double restartTime(const std::string& caseDir, const scene::RunControl& rc, cons
     return rc.startTime;
 }
 
+void RestartClock::addTo(StateFile& f) const
+{
+    f.add("time", time);
+    f.add("step", static_cast<double>(step));
+    f.add("scheduleOrigin", scheduleOrigin);
+    f.add("scheduleIndex", static_cast<double>(scheduleIndex));
+}
+
+RestartClock RestartClock::readFrom(const StateFile& f)
+{
+    RestartClock c;
+    c.time = f.scalar("time");
+    c.step = static_cast<long long>(f.scalar("step"));
+    c.scheduleOrigin = f.scalar("scheduleOrigin");
+    c.scheduleIndex = static_cast<long long>(f.scalar("scheduleIndex"));
+    return c;
+}
+
 } // namespace output
 } // namespace slide

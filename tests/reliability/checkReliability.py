@@ -15,7 +15,8 @@
                         (slideMPM: its elastic clay rings, so the front stays
                         within twice the face's elastic bulge and does not drift).
 
-Usage: checkReliability.py blowup|static slideDAM|slideMPM|slideFoam <work dir>"""
+Usage: checkReliability.py blowup|static slideDAM|slideMPM|slideFoam <work dir> [bin dir]
+  bin dir: where the application is (default: found on etc/bashrc's PATH)"""
 import math
 import os
 import re
@@ -49,10 +50,14 @@ def case_for(app, work, name, scene=None, control=None, extra=""):
     return d
 
 
+bindir = None
+
+
 def run_method(app, d):
     if app == "slideFoam":
         prepare(d)
-    return run(d, which(app), "-case", ".", check=False)
+    exe = os.path.join(bindir, app) if bindir else which(app)
+    return run(d, exe, "-case", ".", check=False)
 
 
 def blowup(app, work):
@@ -60,6 +65,7 @@ def blowup(app, work):
         # Coarse cells of 3.75 cm: a fixed step of 0.05 s is a Courant number of ~1.5 at 1 m/s.
         d = case_for(app, work, "blowup", control={"endTime": 1, "adjustTimeStep": "no", "deltaT": 0.05,
                                                    "writeInterval": 0.05})
+        open(os.path.join(d, "system", "cfdDict"), "w").write("cellsPerHeight 8;\nreach 20;\n")
     else:
         d = case_for(app, work, "blowup", control={"endTime": 1}, extra="deltaT 0.05;\n")
     rc = run_method(app, d)
@@ -128,8 +134,10 @@ def static(app, work):
 
 
 def main():
-    if len(sys.argv) != 4 or sys.argv[1] not in ("blowup", "static") or sys.argv[2] not in METHOD_DICT:
+    global bindir
+    if len(sys.argv) not in (4, 5) or sys.argv[1] not in ("blowup", "static") or sys.argv[2] not in METHOD_DICT:
         sys.exit(__doc__)
+    bindir = sys.argv[4] if len(sys.argv) == 5 else None
     work = os.path.abspath(sys.argv[3])
     os.makedirs(work, exist_ok=True)
     {"blowup": blowup, "static": static}[sys.argv[1]](sys.argv[2], work)

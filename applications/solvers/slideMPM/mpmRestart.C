@@ -70,10 +70,7 @@ void fill(const output::StateFile& f, const std::string& path, const std::string
 void writeState(const std::string& caseDir, const RestartPoint& at, const MaterialPoints& mp)
 {
     output::StateFile f;
-    f.add("time", at.time);
-    f.add("step", static_cast<double>(at.step));
-    f.add("scheduleOrigin", at.scheduleOrigin);
-    f.add("scheduleIndex", static_cast<double>(at.scheduleIndex));
+    at.addTo(f);
     f.add("initialFront", at.initialFront);
     f.add("initialMass", at.initialMass);
     f.add("highest", at.highest);
@@ -127,10 +124,7 @@ RestartPoint readState(const std::string& path, MaterialPoints& mp)
     fill(f, path, "dilatation", mp.dilatation);
 
     RestartPoint at;
-    at.time = f.scalar("time");
-    at.step = static_cast<long long>(f.scalar("step"));
-    at.scheduleOrigin = f.scalar("scheduleOrigin");
-    at.scheduleIndex = static_cast<long long>(f.scalar("scheduleIndex"));
+    static_cast<output::RestartClock&>(at) = output::RestartClock::readFrom(f);
     at.initialFront = f.scalar("initialFront");
     at.initialMass = f.scalar("initialMass");
     at.highest = f.scalar("highest");

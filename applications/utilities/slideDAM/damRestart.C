@@ -18,10 +18,7 @@ std::vector<double> toDoubles(const std::vector<int>& v)
 void writeState(const std::string& caseDir, const RestartPoint& at, const SlideColumns& s)
 {
     output::StateFile f;
-    f.add("time", at.time);
-    f.add("step", static_cast<double>(at.step));
-    f.add("scheduleOrigin", at.scheduleOrigin);
-    f.add("scheduleIndex", static_cast<double>(at.scheduleIndex));
+    at.addTo(f);
     f.add("x", s.x);
     f.add("U", s.U);
     f.add("plugVelocity", s.Up);
@@ -72,12 +69,7 @@ RestartPoint readState(const std::string& path, SlideColumns& s)
     s.initialLength = f.scalar("initialLength");
     s.initialHeight = f.scalar("initialHeight");
 
-    RestartPoint at;
-    at.time = f.scalar("time");
-    at.step = static_cast<long long>(f.scalar("step"));
-    at.scheduleOrigin = f.scalar("scheduleOrigin");
-    at.scheduleIndex = static_cast<long long>(f.scalar("scheduleIndex"));
-    return at;
+    return output::RestartClock::readFrom(f);
 }
 
 } // namespace dam
