@@ -34,15 +34,23 @@ std::vector<double> flatten(const ParticleScalar& v)
     return std::vector<double>(h.data(), h.data() + h.size());
 }
 
+// The values of `key`, which must number n (one per particle and component).
+const std::vector<double>& sized(const output::StateFile& f, const std::string& path, const std::string& key,
+                                 const std::size_t n)
+{
+    const std::vector<double>& data = f.vector(key);
+    if (data.size() != n)
+    {
+        throw scene::InputError(path, 0, key, "expected " + std::to_string(n) + " values, found "
+                                + std::to_string(data.size()));
+    }
+    return data;
+}
+
 template<class View>
 void fill(const output::StateFile& f, const std::string& path, const std::string& key, const View& v)
 {
-    const std::vector<double>& data = f.vector(key);
-    if (data.size() != v.size())
-    {
-        throw scene::InputError(path, 0, key, "expected " + std::to_string(v.size()) + " values, found "
-                                + std::to_string(data.size()));
-    }
+    const std::vector<double>& data = sized(f, path, key, v.size());
     auto h = Kokkos::create_mirror(v);
     std::size_t k = 0;
     for (std::size_t p = 0; p < h.extent(0); ++p)
@@ -54,12 +62,7 @@ void fill(const output::StateFile& f, const std::string& path, const std::string
 
 void fill(const output::StateFile& f, const std::string& path, const std::string& key, const ParticleScalar& v)
 {
-    const std::vector<double>& data = f.vector(key);
-    if (data.size() != v.size())
-    {
-        throw scene::InputError(path, 0, key, "expected " + std::to_string(v.size()) + " values, found "
-                                + std::to_string(data.size()));
-    }
+    const std::vector<double>& data = sized(f, path, key, v.size());
     auto h = Kokkos::create_mirror(v);
     for (std::size_t p = 0; p < h.size(); ++p) h(p) = data[p];
     Kokkos::deep_copy(v, h);
