@@ -68,6 +68,25 @@ void fill(const output::StateFile& f, const std::string& path, const std::string
     Kokkos::deep_copy(v, h);
 }
 
+// Every per-particle view the state holds, by its name in the file: the one list
+// both writeState and readState go through.
+template<class Points, class F>
+void forEachParticleView(Points& mp, F&& f)
+{
+    f("position", mp.position);
+    f("velocity", mp.velocity);
+    f("affine", mp.affine);
+    f("velocityGradient", mp.velocityGradient);
+    f("stress", mp.stress);
+    f("mass", mp.mass);
+    f("volume", mp.volume);
+    f("plasticShearStrain", mp.plasticShearStrain);
+    f("strength", mp.strength);
+    f("shearStrainRate", mp.shearStrainRate);
+    f("plasticShearStrainRate", mp.plasticShearStrainRate);
+    f("dilatation", mp.dilatation);
+}
+
 } // namespace
 
 void writeState(const std::string& caseDir, const RestartPoint& at, const MaterialPoints& mp)
@@ -91,18 +110,7 @@ void writeState(const std::string& caseDir, const RestartPoint& at, const Materi
                     at.stats.kineticEnergy, at.stats.finite ? 1.0 : 0.0});
     f.add("count", static_cast<double>(mp.count));
     f.add("spacing", mp.spacing);
-    f.add("position", flatten(mp.position));
-    f.add("velocity", flatten(mp.velocity));
-    f.add("affine", flatten(mp.affine));
-    f.add("velocityGradient", flatten(mp.velocityGradient));
-    f.add("stress", flatten(mp.stress));
-    f.add("mass", flatten(mp.mass));
-    f.add("volume", flatten(mp.volume));
-    f.add("plasticShearStrain", flatten(mp.plasticShearStrain));
-    f.add("strength", flatten(mp.strength));
-    f.add("shearStrainRate", flatten(mp.shearStrainRate));
-    f.add("plasticShearStrainRate", flatten(mp.plasticShearStrainRate));
-    f.add("dilatation", flatten(mp.dilatation));
+    forEachParticleView(mp, [&](const char* name, const auto& v) { f.add(name, flatten(v)); });
     f.write(output::statePath(caseDir, at.time, "slideMPM"));
 }
 
@@ -113,18 +121,7 @@ RestartPoint readState(const std::string& path, MaterialPoints& mp)
     if (!(count >= 1.0 && count < 2e9)) throw scene::InputError(path, 0, "count", "not a particle count");
     mp.allocate(static_cast<int>(count));
     mp.spacing = f.scalar("spacing");
-    fill(f, path, "position", mp.position);
-    fill(f, path, "velocity", mp.velocity);
-    fill(f, path, "affine", mp.affine);
-    fill(f, path, "velocityGradient", mp.velocityGradient);
-    fill(f, path, "stress", mp.stress);
-    fill(f, path, "mass", mp.mass);
-    fill(f, path, "volume", mp.volume);
-    fill(f, path, "plasticShearStrain", mp.plasticShearStrain);
-    fill(f, path, "strength", mp.strength);
-    fill(f, path, "shearStrainRate", mp.shearStrainRate);
-    fill(f, path, "plasticShearStrainRate", mp.plasticShearStrainRate);
-    fill(f, path, "dilatation", mp.dilatation);
+    forEachParticleView(mp, [&](const char* name, const auto& v) { fill(f, path, name, v); });
 
     RestartPoint at;
     static_cast<output::RestartClock&>(at) = output::RestartClock::readFrom(f);
