@@ -1,5 +1,6 @@
 #include "outputContract.H"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -140,6 +141,44 @@ void Summary::write(const std::string& caseDir) const
         if (!os) throw std::runtime_error("error writing " + tmp.string());
     }
     fs::rename(tmp, dir/"summary.json");
+}
+
+const std::vector<std::string>& mechanismNames()
+{
+    static const std::vector<std::string> names
+    {
+        "viscous elongation", "block sliding", "spreading (horsts and grabens)", "breakaway"
+    };
+    return names;
+}
+
+std::string runMechanism(const MechanismHistory& history, const std::string& finalName,
+                         const bool atRest)
+{
+    const bool structural = finalName.rfind("spreading", 0) == 0 || finalName == "breakaway";
+    if (!atRest || structural || history.empty()) return finalName;
+    std::vector<std::pair<std::string, int>> counts;
+    for (const auto& h : history)
+    {
+        auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == h.second; });
+        if (it == counts.end()) counts.emplace_back(h.second, 1);
+        else ++it->second;
+    }
+    auto best = counts.begin();
+    for (auto it = counts.begin(); it != counts.end(); ++it) if (it->second > best->second) best = it;
+    return best->first;
+}
+
+std::string mechanismHistoryJson(const MechanismHistory& history)
+{
+    std::ostringstream os;
+    os << "[";
+    for (std::size_t k = 0; k < history.size(); ++k)
+    {
+        os << (k ? ", " : "") << "[" << jsonNumber(history[k].first) << ", " << jsonEscape(history[k].second) << "]";
+    }
+    os << "]";
+    return os.str();
 }
 
 } // namespace output

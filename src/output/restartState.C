@@ -2,6 +2,7 @@
 
 #include "dictionary.H"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -143,6 +144,15 @@ void RestartClock::addTo(StateFile& f) const
     f.add("step", static_cast<double>(step));
     f.add("scheduleOrigin", scheduleOrigin);
     f.add("scheduleIndex", static_cast<double>(scheduleIndex));
+    std::vector<double> times, codes;
+    for (const auto& m : mechanisms)
+    {
+        const auto& names = mechanismNames();
+        times.push_back(m.first);
+        codes.push_back(static_cast<double>(std::find(names.begin(), names.end(), m.second) - names.begin()));
+    }
+    f.add("mechanismTimes", times);
+    f.add("mechanismCodes", codes);
 }
 
 RestartClock RestartClock::readFrom(const StateFile& f)
@@ -152,6 +162,14 @@ RestartClock RestartClock::readFrom(const StateFile& f)
     c.step = static_cast<long long>(f.scalar("step"));
     c.scheduleOrigin = f.scalar("scheduleOrigin");
     c.scheduleIndex = static_cast<long long>(f.scalar("scheduleIndex"));
+    const std::vector<double>& times = f.vector("mechanismTimes");
+    const std::vector<double>& codes = f.vector("mechanismCodes");
+    const auto& names = mechanismNames();
+    for (std::size_t k = 0; k < times.size() && k < codes.size(); ++k)
+    {
+        const std::size_t code = static_cast<std::size_t>(codes[k]);
+        c.mechanisms.emplace_back(times[k], code < names.size() ? names[code] : "unknown");
+    }
     return c;
 }
 

@@ -31,25 +31,12 @@ FoamFile
 
 
 ALLRUN = """#!/bin/bash
-# Table 1 Case {case}: every SlideFoam method that is built, each logging to log.<application>.
+# Table 1 Case {case}: slideDAM, slideMPM and slideFoam (those built), each logging to
+# log.<application>, then the comparison (postProcessing/comparison/).
 cd "${{0%/*}}" || exit 1
 [ -n "${{SLIDEFOAM_DIR:-}}" ] || . ../../../etc/bashrc
 . "$SLIDEFOAM_DIR/bin/tools/RunFunctions"
-status=0
-for app in slideDAM slideMPM; do
-    if command -v "$app" > /dev/null; then
-        runApplication "$app" -case . || status=1
-    else
-        echo "$app is not built (./Allwmake): skipped"
-    fi
-done
-# slideFoam sizes its mesh from slideDAM's runout (system/cfdDict).
-if command -v slideFoam > /dev/null; then
-    runSlideFoam || status=1
-else
-    echo "slideFoam is not built (./Allwmake): skipped"
-fi
-exit "$status"
+runAllMethods
 """
 
 CFDDICT = """// Cells of H0/10 = 0.5 m; the mesh reaches 1.3 x slideDAM's runout + 2 H0 ahead
@@ -95,6 +82,37 @@ def num(s):
 
 def fmt(x):
     return ("%.6g" % x)
+
+
+# What the paper shows of each case beyond its runout (its Figs. 7-10).
+SHOWS = {2: "the profile at 10 s (Fig. 7)", 9: "block sliding at 20 s: ~200 m, ~12 m/s, thickness near H_stability = 3.4 m, "
+         "against ~350 m for the original DAM algorithm (Fig. 9)",
+         11: "spreading with horsts and grabens by 10 s and a front wedge breaking away by 30 s (MPM, Fig. 8)",
+         12: "a shear band along the base (MPM)"}
+
+
+def readme(case, row, paper):
+    """The case's README: what it is, what the paper found, what each method can show."""
+    strength = "s_uo %s kPa" % row["s_uo_kPa"]
+    if num(row["eta"]):
+        strength += ", eta %s, n %s, gdot_ref %s 1/s" % (row["eta"], row["n"], row["gdot_ref"])
+    if (num(row["delta_rem"]) or 1.0) < 1:
+        strength += ", delta_rem %s, xi95 %s" % (row["delta_rem"], row["xi95"])
+    base = "no-slip" if row["base"] != "frictional" else "frictional, s_b %s kPa" % row["s_b_kPa"]
+    lines = ["# Table 1, Case %d" % case, "",
+             "A 40 m x 5 m slide (rho' = 600 kg/m3) released at rest on a %s deg planar base (%s); %s." % (
+                 row["theta_deg"], base, strength), "",
+             "- Paper: %s; runout %s." % (row["mechanism"], paper or "not given")]
+    if case in SHOWS:
+        lines.append("- The paper also shows %s." % SHOWS[case])
+    if "spreading" in row["mechanism"] or "shear band" in row["mechanism"]:
+        lines.append("- slideDAM runs this case but cannot show it: one velocity profile per column has no shear band, "
+                     "no horsts and grabens and no breakaway; the comparison says so.")
+    lines += ["- `./Allrun`: slideDAM, slideMPM and slideFoam (`log.<application>`), then `compareMethods` writes "
+              "`postProcessing/comparison/comparison.md` and `histories.png`.",
+              "- Settings: `system/damDict`, `mpmDict`, `cfdDict` (fast by default; `setting reference` for the "
+              "paper's). The Table 1 comparison of all cases: `validation/README.md`.", ""]
+    return "\n".join(lines)
 
 
 rows = [r for r in csv.reader(line for line in open(table) if not line.startswith("#"))]
@@ -190,6 +208,8 @@ runTimeModifiable no;
         f.write(header.format(case=case, obj="mpmDict") + MPMDICT)
     with open(os.path.join(d, "system", "cfdDict"), "w") as f:
         f.write(header.format(case=case, obj="cfdDict") + CFDDICT)
+    with open(os.path.join(d, "README.md"), "w") as f:
+        f.write(readme(case, row, paper))
     for name, text in (("Allrun", ALLRUN), ("Allclean", ALLCLEAN)):
         path = os.path.join(d, name)
         with open(path, "w") as f:

@@ -5,20 +5,25 @@ import os
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
+def paper_line(scene_path):
+    """(mechanism, {"DAM": m, "MPM": m, "CFD": m, "observed": m}) from the scene's '// Paper:' comment,
+    e.g. '// Paper: block sliding; runout DAM 1381 m, MPM 1400 m, observed 1340 m;'."""
+    lines = [l for l in open(scene_path).read().splitlines() if l.startswith("// Paper:")]
+    if not lines:
+        return "", {}
+    mech, _, runs = lines[0][len("// Paper: "):].partition("; runout ")
+    vals = {}
+    for part in runs.rstrip(";").split(", "):
+        bits = part.split()
+        if len(bits) >= 2 and bits[0] in ("DAM", "MPM", "CFD", "observed"):
+            try:
+                vals[bits[0]] = float(bits[1])
+            except ValueError:
+                pass
+    return mech, vals
+
+
 def paper_table():
     """{case: (mechanism, {"DAM": m, "MPM": m, "CFD": m})} with the values the paper gives."""
-    rows = {}
-    for c in range(1, 14):
-        text = open(os.path.join(TOP, "tutorials", "table1", "case%02d" % c, "constant", "sceneProperties")).read()
-        line = [l for l in text.splitlines() if l.startswith("// Paper:")][0]
-        mech, _, runs = line[len("// Paper: "):].partition("; runout ")
-        vals = {}
-        for part in runs.split(", "):
-            bits = part.split()
-            if len(bits) >= 2 and bits[0] in ("DAM", "MPM", "CFD"):
-                try:
-                    vals[bits[0]] = float(bits[1])
-                except ValueError:
-                    pass
-        rows[c] = (mech, vals)
-    return rows
+    return {c: paper_line(os.path.join(TOP, "tutorials", "table1", "case%02d" % c, "constant", "sceneProperties"))
+            for c in range(1, 14)}

@@ -150,15 +150,6 @@ double median(std::vector<double> v)
 
 } // namespace
 
-const std::vector<std::string>& mechanismNames()
-{
-    static const std::vector<std::string> names
-    {
-        "viscous elongation", "block sliding", "spreading (horsts and grabens)", "breakaway"
-    };
-    return names;
-}
-
 Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const double H0, const double g,
                           const double cellSize)
 {
@@ -241,7 +232,7 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
     m.shearBand = (xb > 0.5 && m.basalStrainRatio > 3.0) ? "along the base"
                 : (m.grabens > 0 ? "in the body" : "none");
 
-    const std::vector<std::string>& names = mechanismNames();
+    const std::vector<std::string>& names = output::mechanismNames();
     if (m.bodies > 1) m.name = names[3];
     else if (m.grabens >= 2) m.name = names[2];
     else if (std::fabs(V) > 0.1*std::sqrt(g*H0) && m.basalSlipRatio > 0.8) m.name = names[1];

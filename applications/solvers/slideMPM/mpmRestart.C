@@ -96,16 +96,6 @@ void writeState(const std::string& caseDir, const RestartPoint& at, const Materi
     f.add("initialFront", at.initialFront);
     f.add("initialMass", at.initialMass);
     f.add("highest", at.highest);
-    std::vector<double> mechTimes, mechCodes;
-    for (const auto& m : at.mechanisms)
-    {
-        mechTimes.push_back(m.first);
-        std::size_t code = 0;
-        while (code < mechanismNames().size() && mechanismNames()[code] != m.second) ++code;
-        mechCodes.push_back(static_cast<double>(code));
-    }
-    f.add("mechanismTimes", mechTimes);
-    f.add("mechanismCodes", mechCodes);
     f.add("stats", {at.stats.xmin, at.stats.xmax, at.stats.ymin, at.stats.ymax, at.stats.maxSpeed,
                     at.stats.kineticEnergy, at.stats.finite ? 1.0 : 0.0});
     f.add("count", static_cast<double>(mp.count));
@@ -137,13 +127,6 @@ RestartPoint readState(const std::string& path, MaterialPoints& mp)
     at.stats.maxSpeed = st[4];
     at.stats.kineticEnergy = st[5];
     at.stats.finite = st[6] != 0.0;
-    const std::vector<double>& times = f.vector("mechanismTimes");
-    const std::vector<double>& codes = f.vector("mechanismCodes");
-    for (std::size_t k = 0; k < times.size() && k < codes.size(); ++k)
-    {
-        const std::size_t c = static_cast<std::size_t>(codes[k]);
-        at.mechanisms.emplace_back(times[k], c < mechanismNames().size() ? mechanismNames()[c] : "unknown");
-    }
     return at;
 }
 

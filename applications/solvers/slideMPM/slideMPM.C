@@ -104,7 +104,7 @@ int main(int argc, char** argv)
         double t = rc.startTime;
         long long step = 0;
         output::WriteSchedule schedule(rc);
-        std::vector<std::pair<double, std::string>> mechanisms;
+        output::MechanismHistory mechanisms;
         const double restartAt = output::restartTime(caseDir, rc, "slideMPM");
         std::unique_ptr<mpm::StepStatistics> restartStats;
         if (restartAt > 0.0)
@@ -144,8 +144,8 @@ int main(int argc, char** argv)
             if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
             if (controls.writeState)
             {
-                mpm::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), initialFront, initialMass,
-                                          highest, mechanisms, stats}, points);
+                mpm::writeState(caseDir, {{t, step, schedule.origin(), schedule.index(), mechanisms}, initialFront,
+                                          initialMass, highest, stats}, points);
             }
             return hp;
         };
@@ -246,26 +246,18 @@ int main(int argc, char** argv)
         summary.addNumber("final_length_m", last.front - last.rear);
         summary.addNumber("max_thickness_m", last.maxThickness);
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
-        summary.addString("mechanism", mech.name);
+        const std::string runMechanism = output::runMechanism(mechanisms, mech.name, atRest);
+        summary.addString("mechanism", runMechanism);
+        summary.addString("final_state_mechanism", mech.name);
         summary.addString("shear_band", mech.shearBand);
         summary.addNumber("bodies", mech.bodies);
         summary.addNumber("grabens", mech.grabens);
         summary.addNumber("basal_slip_ratio", mech.basalSlipRatio);
-        {
-            std::ostringstream os;
-            os << '[';
-            for (std::size_t k = 0; k < mechanisms.size(); ++k)
-            {
-                os << (k ? ", " : "") << "[" << output::jsonNumber(mechanisms[k].first) << ", "
-                   << output::jsonEscape(mechanisms[k].second) << "]";
-            }
-            os << ']';
-            summary.extra.emplace_back("mechanism_history", os.str());
-        }
+        summary.extra.emplace_back("mechanism_history", output::mechanismHistoryJson(mechanisms));
         summary.write(caseDir);
 
         std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
-                  << (atRest ? "at rest" : "still moving") << "), mechanism: " << mech.name << "\n"
+                  << (atRest ? "at rest" : "still moving") << "), mechanism: " << runMechanism << "\n"
                   << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
                   << summary.wallTime << " s, " << step*static_cast<double>(points.count)/summary.wallTime
                   << " particle-updates/s on " << backend << "\nEnd\n" << std::endl;

@@ -80,13 +80,19 @@ double DamIntegrator::stableTimeStep(const SlideColumns& s) const
     return controls_.courant*dxMin/speed;
 }
 
-bool DamIntegrator::atRest(const SlideColumns& s, double restVelocity)
+double DamIntegrator::maxSpeed(const SlideColumns& s)
 {
-    for (int j = 0; j < s.nNodes(); ++j)
-    {
-        if (std::fabs(s.U[j]) > restVelocity || std::fabs(s.Up[j]) > restVelocity) return false;
-    }
-    return true;
+    double v = 0.0;
+    for (int j = 0; j < s.nNodes(); ++j) v = std::max({v, std::fabs(s.U[j]), std::fabs(s.Up[j])});
+    return v;
+}
+
+bool DamIntegrator::atRest(const SlideColumns& s, double restVelocity, double previousMaxSpeed)
+{
+    // Slow is not enough: a slide that starts from rest under a small net force (a block
+    // released on a gentle slope) is slow for its first steps but accelerating.
+    const double v = maxSpeed(s);
+    return v <= restVelocity && v <= previousMaxSpeed;
 }
 
 void DamIntegrator::step(SlideColumns& s, const double dt, const double time)

@@ -57,6 +57,7 @@ int main(int argc, char** argv)
         double t = rc.startTime;
         long long step = 0;
         output::WriteSchedule schedule(rc);
+        output::MechanismHistory mechanisms;
         const double restartAt = output::restartTime(caseDir, rc, "slideDAM");
         if (restartAt > 0.0)
         {
@@ -64,6 +65,7 @@ int main(int argc, char** argv)
             t = at.time;
             step = at.step;
             schedule = output::WriteSchedule(rc, at.scheduleOrigin, at.scheduleIndex);
+            mechanisms = at.mechanisms;
             std::cout << "Restarting from " << output::statePath(caseDir, restartAt, "slideDAM") << " (t = " << t
                       << " s, step " << step << ")\n" << std::endl;
         }
@@ -95,7 +97,7 @@ int main(int argc, char** argv)
             if (series) series->add(t, dam::profile(slide, sc));
             if (controls.writeState)
             {
-                dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index()}, slide);
+                dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), mechanisms}, slide);
             }
         };
 
@@ -104,6 +106,7 @@ int main(int argc, char** argv)
         progress.report(t, step, true, "front = " + std::to_string(slide.front()) + " m");
 
         bool atRest = false;
+        double speedBeforeStep = dam::DamIntegrator::maxSpeed(slide);
         bool warnedFixedStep = false;
         while (schedule.running(t))
         {
@@ -121,11 +124,12 @@ int main(int argc, char** argv)
                 throw output::BlowUp(t, "the slide", "time step", os.str());
             }
             const output::WriteSchedule::Step s = schedule.clip(t, dtStable);
+            speedBeforeStep = dam::DamIntegrator::maxSpeed(slide);
             integrator.step(slide, s.dt, t);
             ++step;
             t = s.time;
 
-            if (rc.stopAtRest && dam::DamIntegrator::atRest(slide, rc.restVelocity))
+            if (rc.stopAtRest && dam::DamIntegrator::atRest(slide, rc.restVelocity, speedBeforeStep))
             {
                 atRest = true;
                 write(t);
@@ -135,6 +139,7 @@ int main(int argc, char** argv)
             if (schedule.writeDue(s))
             {
                 schedule.next();   // first, so that the state written holds the next write
+                mechanisms.emplace_back(t, dam::detectMechanism(slide, sc.g));
                 write(t);
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << slide.front() << " m  U_front = " << slide.U.back()
@@ -150,7 +155,7 @@ int main(int argc, char** argv)
                 progress.report(t, step);
             }
         }
-        if (!atRest) atRest = dam::DamIntegrator::atRest(slide, rc.restVelocity);
+        if (!atRest) atRest = dam::DamIntegrator::atRest(slide, rc.restVelocity, speedBeforeStep);
 
         const double mass = rho*slide.totalArea();
         output::Summary summary;
@@ -168,7 +173,10 @@ int main(int argc, char** argv)
         summary.addNumber("node_updates_per_second", step*static_cast<double>(slide.nNodes())/summary.wallTime);
         summary.addNumber("final_length_m", slide.x.back() - slide.x.front());
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
-        summary.addString("mechanism", dam::detectMechanism(slide, sc.g));
+        const std::string finalMechanism = dam::detectMechanism(slide, sc.g);
+        summary.addString("mechanism", output::runMechanism(mechanisms, finalMechanism, atRest));
+        summary.addString("final_state_mechanism", finalMechanism);
+        summary.extra.emplace_back("mechanism_history", output::mechanismHistoryJson(mechanisms));
         summary.write(caseDir);
 
         std::cout << "\nRunout " << std::setprecision(6) << slide.front() << " m at t = " << t << " s ("
