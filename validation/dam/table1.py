@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Regenerates the DAM column of Table 1 (Dong, Wang & Cui 2020): runs slideDAM
 on tutorials/table1/case01..13 and writes table1.md and table1.png beside this
-script: the paper's DAM runout, slideDAM's, the error, the detected mechanism.
+script: the paper's DAM runout, slideDAM's, the error, the detected mechanism;
+table1.json holds the raw results with the front history for validation/report.py.
 
 Usage: validation/dam/table1.py [--columns N] [--setting reference|fast]
 (after ./Allwmake; the default is the fast setting with 800 columns)"""
 import argparse
-import csv
+import json
 import os
 import shutil
 import subprocess
@@ -35,6 +36,7 @@ def main():
     paper[9.5] = ("block sliding over-predicted by the original algorithm (~350 m at 20 s)", None)
     work = tempfile.mkdtemp(prefix="slideDAM_table1_")
     results = []
+    raw = []
     # Case 9 twice: the enhanced base (Eq. 5) and the original algorithm (Eq. 4).
     for c in list(range(1, 14)) + [9.5]:
         src = os.path.join(top, "tutorials", "table1", "case%02d" % int(c))
@@ -56,7 +58,14 @@ def main():
         r = read_runout(os.path.join(d, "postProcessing", "slideDAM", "runout.dat"))
         results.append((c, s["runout_m"], s["end_time_s"], s["at_rest"], s["mechanism"], r["maxThickness"][-1],
                         r["frontVelocity"][-1], s["wall_time_s"]))
+        raw.append({"case": c, "runout": s["runout_m"], "endTime": s["end_time_s"], "atRest": s["at_rest"],
+                    "mechanism": s["mechanism"], "wall": s["wall_time_s"], "columns": s["problem_size"],
+                    "setting": args.setting, "maxThickness": float(r["maxThickness"][-1]),
+                    "history": [[float(a), float(b), float(v)]
+                                for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]})
         print("case %s: %s" % (c, results[-1][1:]), flush=True)
+    with open(os.path.join(here, "table1.json"), "w") as f:
+        json.dump(raw, f, indent=1)
 
     label = "%s, %d columns" % (args.setting, args.columns) if args.setting == "fast" else "reference"
     with open(os.path.join(here, "table1.md"), "w") as f:

@@ -48,7 +48,8 @@ def run_case(c, cells, ppc, work):
             "atRest": s["at_rest"], "wall": s["wall_time_s"], "particles": s["problem_size"],
             "mechanism": s["mechanism"], "shearBand": s.get("shear_band"), "mech10": at(10.0), "mech30": at(30.0),
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
-            "maxVelocity": float(r["maxVelocity"][-1])}
+            "maxVelocity": float(r["maxVelocity"][-1]),
+            "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}
 
 
 def main():
@@ -70,7 +71,14 @@ def main():
                   "%.1f m (%s, %s), %.0f s" % (res["runout"], res["mechanism"],
                                                "at rest" if res["atRest"] else "moving at t = %g s" % res["endTime"],
                                                res["wall"])), flush=True)
-    with open(os.path.join(here, "table1.json"), "w") as f:
+    # Results of other cases or resolutions from earlier runs are kept: a run of a few
+    # cases updates the table instead of replacing it.
+    path = os.path.join(here, "table1.json")
+    kept = [r for r in (json.load(open(path)) if os.path.isfile(path) else [])
+            if not any(r["case"] == n["case"] and r["cells"] == n["cells"] and r["ppc"] == n["ppc"] for n in results)]
+    results = sorted(kept + results, key=lambda r: (r["case"], r["cells"], r["ppc"]))
+    cases = sorted({r["case"] for r in results if r["ppc"] == args.ppc and r["cells"] in cells})
+    with open(path, "w") as f:
         json.dump(results, f, indent=1)
 
     lines = ["# Table 1, MPM column: slideMPM against Dong, Wang & Cui (2020)", "",
@@ -87,7 +95,11 @@ def main():
         mech, vals = paper[c]
         row = "| %d | %s | %s | %s |" % (c, mech, vals.get("MPM", ""), vals.get("DAM", ""))
         for h in cells:
-            res = [r for r in results if r["case"] == c and r["cells"] == h][0]
+            found = [r for r in results if r["case"] == c and r["cells"] == h and r["ppc"] == args.ppc]
+            if not found:
+                row += " - | | | |"
+                continue
+            res = found[0]
             if "failed" in res:
                 row += " failed | | | |"
                 continue
@@ -120,8 +132,8 @@ def main():
         for k, h in enumerate(cells):
             vals = []
             for c in shown:
-                res = [r for r in results if r["case"] == c and r["cells"] == h][0]
-                vals.append(res.get("runout", np.nan))
+                found = [r for r in results if r["case"] == c and r["cells"] == h and r["ppc"] == args.ppc]
+                vals.append(found[0].get("runout", np.nan) if found else np.nan)
             ax.bar(x + (k + 1)*w, vals, w, label="slideMPM H0/%d" % h)
         ax.set_xticks(x + 0.5*w*len(cells))
         ax.set_xticklabels(["Case %d" % c for c in shown])

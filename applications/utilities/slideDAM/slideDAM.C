@@ -11,6 +11,7 @@
 #include "damControls.H"
 #include "damIntegrator.H"
 #include "damOutput.H"
+#include "damApplicability.H"
 #include "damRestart.H"
 #include "restartState.H"
 #include "outputContract.H"
@@ -47,6 +48,12 @@ int main(int argc, char** argv)
 
         std::cout << sc.describe();
         std::cout << "\nNumerics: " << controls.describe() << "\n" << std::endl;
+        const dam::Applicability applicability = dam::checkApplicability(sc, dam::defaultApplicabilityMap());
+        if (applicability.verdict == "outside")
+        {
+            std::cout << "Warning: " << applicability.message << ": the depth-averaged shear layer may misrepresent "
+                      << "this slide; compare with slideMPM.\n" << std::endl;
+        }
 
         dam::SlideColumns slide = dam::SlideColumns::fromScene(sc, controls.columns);
         dam::DamIntegrator integrator(sc, controls);
@@ -176,6 +183,7 @@ int main(int argc, char** argv)
         const std::string finalMechanism = dam::detectMechanism(slide, sc.g);
         summary.addString("mechanism", output::runMechanism(mechanisms, finalMechanism, atRest));
         summary.addString("final_state_mechanism", finalMechanism);
+        summary.addString("dam_applicability", applicability.verdict);
         summary.extra.emplace_back("mechanism_history", output::mechanismHistoryJson(mechanisms));
         summary.write(caseDir);
 

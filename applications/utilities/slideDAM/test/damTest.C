@@ -6,11 +6,14 @@
 #include "slideColumns.H"
 #include "lubricationReference.H"
 #include "blockScene.H"
+#include "damApplicability.H"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 using namespace slide;
 
@@ -213,4 +216,29 @@ TEST(SlideDAM, KroneWrightFlumeAgainstLubricationTheory)
     // 5.50 m with 1000): converged values 5 % apart, the DAM ahead (it keeps the inertia
     // the long-wave model drops). The test allows 10 %.
     EXPECT_NEAR(damFront, lubFront, 0.10*lubFront);
+}
+
+TEST(SlideDAM, ApplicabilityMapWarnsWhereTheMethodsDisagreed)
+{
+    const std::string path = (std::filesystem::temp_directory_path() / "slideDAM_applicabilityTest").string();
+    {
+        std::ofstream f(path);
+        f << "tolerance 0.15;\neta 0.45;\nn 0.23;\ns_uo (150 500 2000);\nsensitivity (1 3 10);\n"
+             "agrees ((0 0 0) (1 1 0) (1 1 1));\n";
+    }
+    scene::Scene sc = blockScene(3.43, 500.0, scene::Interface());
+    sc.rheology.eta = 0.45;
+    sc.rheology.n = 0.23;
+    sc.rheology.deltaRem = 1.0;
+    EXPECT_EQ(dam::checkApplicability(sc, path).verdict, "inside");
+    sc.rheology.deltaRem = 1.0/8.0;                    // nearest S_t = 10, which disagreed at 500 Pa
+    EXPECT_EQ(dam::checkApplicability(sc, path).verdict, "outside");
+    sc.rheology.s_uo = 3000.0;                         // nearest 2000 Pa, agreed at S_t = 10
+    EXPECT_EQ(dam::checkApplicability(sc, path).verdict, "inside");
+    sc.rheology.s_uo = 100.0;                          // below the grid
+    const dam::Applicability a = dam::checkApplicability(sc, path);
+    EXPECT_EQ(a.verdict, "outside");
+    EXPECT_NE(a.message.find("outside the map"), std::string::npos) << a.message;
+    EXPECT_EQ(dam::checkApplicability(sc, path + ".missing").verdict, "unknown");
+    std::filesystem::remove(path);
 }

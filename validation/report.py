@@ -1,0 +1,293 @@
+#!/usr/bin/python3
+"""Writes the cross-method part of validation/README.md from what the method
+scripts stored (no runs of its own):
+
+    dam/table1.json, mpm/table1.json, cfd/table1.json   Table 1, per method
+    field/runs.json                                     the field tutorials
+    dam/benchmark.md, mpm/benchmark.md, cfd/flume.md    speed against error (flume)
+    applicability/map.json                              the DAM applicability map
+    snapshots/snapshots.json                            profiles at the paper's times
+
+Figures: table1.png (bars), histories.png (front and front velocity against time
+per case), speedError.png. The text between the REPORT markers of README.md is
+replaced; the rest of README.md (the discussion) is kept as written.
+
+Usage: validation/report.py      (validation/Allrun runs the method scripts first)
+"""
+import json
+import math
+import os
+import re
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "lib"))
+from paper import paper_table  # noqa: E402
+
+METHODS = ("DAM", "MPM", "CFD")
+COLOURS = {"DAM": "tab:blue", "MPM": "tab:orange", "CFD": "tab:green"}
+
+
+def load(rel):
+    path = os.path.join(HERE, rel)
+    return json.load(open(path)) if os.path.isfile(path) else None
+
+
+def table1_results():
+    """{case: {method: result dict}} at each method's Table 1 resolution (the finest stored for MPM and CFD
+    that covers most cases: H0/10)."""
+    out = {c: {} for c in range(1, 14)}
+    for r in load("dam/table1.json") or []:
+        if r["case"] in out:
+            out[r["case"]]["DAM"] = {"runout": r["runout"], "atRest": r["atRest"], "end": r["endTime"],
+                                     "mechanism": r["mechanism"], "wall": r["wall"], "history": r.get("history"),
+                                     "setup": "%d columns" % r["columns"]}
+    for r in load("mpm/table1.json") or []:
+        if r["cells"] == 10 and r["ppc"] == 2 and "runout" in r:
+            out[r["case"]]["MPM"] = {"runout": r["runout"], "atRest": r["atRest"], "end": r["endTime"],
+                                     "mechanism": r["mechanism"], "wall": r["wall"], "history": r.get("history"),
+                                     "setup": "H0/10, 2x2"}
+    for r in load("cfd/table1.json") or []:
+        if r["cells"] == 10 and r.get("refinement") == 4:
+            out[r["case"]]["CFD"] = {"runout": r["runout"], "atRest": r["at_rest"], "end": r["end_time"],
+                                     "mechanism": "-", "wall": r["wall"],
+                                     "history": [[t, f, math.nan] for t, f in r.get("history", [])],
+                                     "setup": "H0/10, H0/40 on the base"}
+    return out
+
+
+def fmt_result(res, ref):
+    if not res:
+        return "not run", "-"
+    moving = "" if res["atRest"] else " (moving at %g s)" % res["end"]
+    err = "%+.0f %%" % (100.0*(res["runout"] - ref)/ref) if ref else "-"
+    return "%.1f%s" % (res["runout"], moving), err
+
+
+def table1_section(results, paper):
+    lines = ["### Table 1: the three methods against the paper", "",
+             "Runout = travel of the front [m]; error against the paper's value for the same method. slideDAM: fast "
+             "setting (800 columns); slideMPM: cell H0/10, 2x2 particles; slideFoam: H0/10 with H0/40 on the base, "
+             "2 MPI ranks, run as long as slideDAM took. \"moving\": the run reached its end time with the front "
+             "still moving faster than restVelocity.", "",
+             "| case | paper mechanism | paper DAM | slideDAM | error | paper MPM | slideMPM | error | paper CFD | "
+             "slideFoam | error | slideDAM mechanism | slideMPM mechanism |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    within = {m: [0, 0] for m in METHODS}
+    tol = {"DAM": 5.0, "MPM": 12.0, "CFD": 12.0}
+    for c in range(1, 14):
+        mech, vals = paper[c]
+        row = ["%d" % c, mech]
+        for m in METHODS:
+            res = results[c].get(m)
+            ref = vals.get(m)
+            shown, err = fmt_result(res, ref)
+            row += ["%g" % ref if ref else "-", shown, err]
+            if res and ref:
+                within[m][1] += 1
+                if abs(res["runout"] - ref) <= tol[m]*ref/100.0:
+                    within[m][0] += 1
+        row += [results[c].get("DAM", {}).get("mechanism", "-"), results[c].get("MPM", {}).get("mechanism", "-")]
+        lines.append("| " + " | ".join(row) + " |")
+    lines += ["", "Within the issues' tolerances (DAM 5 %, MPM and CFD 12 % of the paper's value), of the cases the "
+              "paper gives a value for and the method ran: " + "; ".join(
+                  "%s %d of %d" % (m, within[m][0], within[m][1]) for m in METHODS) + ".", "",
+              "![Table 1 runouts](table1.png)", ""]
+    return lines
+
+
+def table1_figure(results, paper):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(12, 4.5))
+    w = 0.13
+    for c in range(1, 14):
+        for k, m in enumerate(METHODS):
+            x = c + (k - 1)*2.2*w
+            ref = paper[c][1].get(m)
+            if ref:
+                ax.bar(x - w/2, ref, w, color=COLOURS[m], alpha=0.35, hatch="//", edgecolor=COLOURS[m])
+            res = results[c].get(m)
+            if res:
+                ax.bar(x + w/2, res["runout"], w, color=COLOURS[m])
+    for m in METHODS:
+        ax.bar([], [], color=COLOURS[m], label="SlideFoam %s" % m)
+        ax.bar([], [], color=COLOURS[m], alpha=0.35, hatch="//", edgecolor=COLOURS[m], label="paper %s" % m)
+    ax.set_yscale("log")
+    ax.set_xticks(range(1, 14))
+    ax.set_xlabel("Table 1 case")
+    ax.set_ylabel("runout [m]")
+    ax.grid(True, axis="y", which="both", alpha=0.3)
+    ax.legend(ncol=3, fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "table1.png"), dpi=110)
+    plt.close(fig)
+
+
+def histories_figure(results, field):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    panels = [("Case %d" % c, results[c]) for c in range(1, 14)] + [(name, runs) for name, runs in field.items()]
+    cols = 5
+    rows = int(math.ceil(len(panels)/cols))
+    fig, axes = plt.subplots(2*rows, cols, figsize=(3.2*cols, 2.3*2*rows))
+    for i, (title, runs) in enumerate(panels):
+        r, c = divmod(i, cols)
+        af, av = axes[2*r][c], axes[2*r + 1][c]
+        for m in METHODS:
+            res = runs.get(m)
+            if not res or not res.get("history"):
+                continue
+            t = [h[0] for h in res["history"]]
+            af.plot(t, [h[1] for h in res["history"]], color=COLOURS[m], label=m)
+            v = [h[2] for h in res["history"]]
+            if not all(math.isnan(x) for x in v):
+                av.plot(t, v, color=COLOURS[m])
+        af.set_title(title, fontsize=9)
+        af.tick_params(labelsize=7)
+        av.tick_params(labelsize=7)
+        if c == 0:
+            af.set_ylabel("front [m]", fontsize=8)
+            av.set_ylabel("front velocity [m/s]", fontsize=8)
+        av.set_xlabel("t [s]", fontsize=8)
+        if i == 0:
+            af.legend(fontsize=7)
+    for j in range(len(panels), rows*cols):
+        r, c = divmod(j, cols)
+        axes[2*r][c].axis("off")
+        axes[2*r + 1][c].axis("off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "histories.png"), dpi=90)
+    plt.close(fig)
+
+
+def md_table(path, first_header):
+    """Rows (lists of cells) of the first Markdown table in path whose header starts with first_header."""
+    full = os.path.join(HERE, path)
+    if not os.path.isfile(full):
+        return []
+    rows, inside = [], False
+    for line in open(full):
+        line = line.strip()
+        if line.startswith("| " + first_header):
+            inside = True
+            continue
+        if inside:
+            if not line.startswith("|"):
+                break
+            if set(line) <= set("|-: "):
+                continue
+            rows.append([x.strip() for x in line.strip("|").split("|")])
+    return rows
+
+
+def speed_error():
+    """{method: [(label, wall [s], error [%])]} on the flume against each method's own finest run."""
+    out = {}
+    dam = [r for r in md_table("dam/benchmark.md", "case") if r[0].startswith("Krone-Wright")]
+    out["DAM"] = [("%s columns" % r[2], float(r[5]), abs(float(r[4]))) for r in dam if float(r[4]) > 0.0]
+    mpm = md_table("mpm/benchmark.md", "cell")
+    out["MPM"] = [("%s %s" % (r[0], r[1]), float(r[4]), abs(float(r[7].replace("%", "")))) for r in mpm
+                  if float(r[7].replace("%", "")) != 0.0]
+    cfd = md_table("cfd/flume.md", "mesh")
+    finest = [r for r in cfd if float(r[5]) == 0.0]
+    if finest:
+        f = float(finest[0][4])
+        out["CFD"] = [("%s, %s rank%s" % (r[0], r[2], "s" if r[2] != "1" else ""), float(r[3]),
+                       100.0*abs(float(r[5]))/f) for r in cfd if float(r[5]) != 0.0]
+    return out
+
+
+def speed_error_section(se):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    lines = ["### Speed against error (Krone-Wright flume, front at 4.1 s)", "",
+             "Wall time on this 2-core machine against the front's difference from each method's own finest run "
+             "(slideDAM: the paper's 4000 columns; slideMPM: H0/60 with 4x4 particles; slideFoam: H0/60 on 2 ranks). "
+             "From `dam/benchmark.md`, `mpm/benchmark.md`, `cfd/flume.md`.", "",
+             "| method | set-up | wall [s] | front error against its finest [%] |", "|---|---|---|---|"]
+    for m, pts in se.items():
+        for label, wall, err in pts:
+            lines.append("| %s | %s | %.3g | %.2f |" % (m, label, wall, err))
+        ax.loglog([p[1] for p in pts], [max(p[2], 1e-3) for p in pts], "o-", color=COLOURS[m], label=m)
+        for label, wall, err in pts:
+            ax.annotate(label, (wall, max(err, 1e-3)), fontsize=6, xytext=(3, 3), textcoords="offset points")
+    ax.set(xlabel="wall time [s]", ylabel="front error against the finest run [%]")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "speedError.png"), dpi=110)
+    plt.close(fig)
+    return lines + ["", "![speed against error](speedError.png)", ""]
+
+
+def field_section(field):
+    if not field:
+        return [], {}
+    lines = ["### Field cases", "",
+             "The tutorials' runs (`field/runs.py`); slideFoam meshes planar bases only and refuses both (its message "
+             "is in the table). Geometry and its sensitivity: `field/sensitivity.md`.", "",
+             "| case | paper / observed [m] | method | runout [m] | peak front velocity [m/s] | mechanism | wall [s] |",
+             "|---|---|---|---|---|---|---|"]
+    hist = {}
+    for name, runs in field.items():
+        hist[name] = {}
+        for m in METHODS:
+            res = runs.get(m)
+            ref = runs.get("paper", {})
+            refs = ", ".join("%s %g" % kv for kv in ref.items())
+            if res is None or "runout" not in res:
+                lines.append("| %s | %s | %s | %s | | | |" % (name, refs, m, (res or {}).get("failed", "not run")))
+                continue
+            hist[name][m] = res
+            lines.append("| %s | %s | %s | %.1f | %.2f | %s | %.3g |" % (
+                name, refs, m, res["runout"], res["peakFrontVelocity"], res["mechanism"], res["wall"]))
+    return lines + [""], hist
+
+
+def map_section(amap):
+    if not amap:
+        return []
+    return ["### DAM applicability map", "", amap["summary"], "", "![applicability map](applicability/map.png)", ""]
+
+
+def snapshot_section(snap):
+    if not snap:
+        return []
+    return ["### Profiles at the paper's snapshot times", "", snap["summary"], "",
+            "![snapshots](snapshots/snapshots.png)", ""]
+
+
+def main():
+    paper = paper_table()
+    results = table1_results()
+    table1_figure(results, paper)
+    field_lines, field_hist = field_section(load("field/runs.json") or {})
+    histories_figure(results, field_hist)
+    lines = ["<!-- REPORT: written by validation/report.py; edit the script, not this part -->", ""]
+    lines += table1_section(results, paper)
+    lines += ["### Histories", "", "Front travel and front velocity against time, every case and method "
+              "(slideFoam's runout log holds no front velocity; its panels show the front only).", "",
+              "![histories](histories.png)", ""]
+    lines += snapshot_section(load("snapshots/snapshots.json"))
+    lines += speed_error_section(speed_error())
+    lines += field_lines
+    lines += map_section(load("applicability/map.json"))
+    lines += ["<!-- /REPORT -->"]
+    readme = os.path.join(HERE, "README.md")
+    text = open(readme).read() if os.path.isfile(readme) else "# Validation\n\n<!-- REPORT -->\n<!-- /REPORT -->\n"
+    block = re.compile(r"<!-- REPORT.*?<!-- /REPORT -->", re.S)
+    if not block.search(text):
+        raise SystemExit("validation/README.md has no <!-- REPORT --> ... <!-- /REPORT --> block to replace")
+    text = block.sub(lambda _: "\n".join(lines), text)
+    with open(readme, "w") as f:
+        f.write(text)
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
