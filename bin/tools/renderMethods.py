@@ -72,9 +72,9 @@ if os.path.isfile(foam) and os.path.isdir(os.path.join(case, "constant", "polyMe
     thr = Threshold(Input=src)
     thr.Scalars = ["CELLS", "alpha.slide"]
     try:
-        thr.LowerThreshold, thr.UpperThreshold = 0.5, 1.0
+        thr.LowerThreshold, thr.UpperThreshold = 0.5, 2.0   # alpha overshoots 1 by round-off
     except AttributeError:
-        thr.ThresholdRange = [0.5, 1.0]
+        thr.ThresholdRange = [0.5, 2.0]
     layers.append(("slideFoam", thr, "xi", "CELLS", t))
 
 if not layers:
