@@ -111,15 +111,17 @@ def table1_figure(results, paper):
             res = results[c].get(m)
             if res:
                 ax.bar(x + w/2, res["runout"], w, color=COLOURS[m])
+    from matplotlib.patches import Patch
+    handles = []
     for m in METHODS:
-        ax.bar([], [], color=COLOURS[m], label="SlideFoam %s" % m)
-        ax.bar([], [], color=COLOURS[m], alpha=0.35, hatch="//", edgecolor=COLOURS[m], label="paper %s" % m)
+        handles.append(Patch(facecolor=COLOURS[m], alpha=0.35, hatch="//", edgecolor=COLOURS[m], label="paper %s" % m))
+        handles.append(Patch(facecolor=COLOURS[m], label="SlideFoam %s" % m))
     ax.set_yscale("log")
     ax.set_xticks(range(1, 14))
     ax.set_xlabel("Table 1 case")
     ax.set_ylabel("runout [m]")
     ax.grid(True, axis="y", which="both", alpha=0.3)
-    ax.legend(ncol=3, fontsize=8)
+    ax.legend(handles=handles, ncol=3, fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "table1.png"), dpi=110)
     plt.close(fig)
