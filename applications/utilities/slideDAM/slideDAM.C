@@ -115,6 +115,7 @@ int main(int argc, char** argv)
         bool atRest = false;
         double speedBeforeStep = dam::DamIntegrator::maxSpeed(slide);
         bool warnedFixedStep = false;
+        bool warnedPastBase = false;
         while (schedule.running(t))
         {
             if (controls.deltaT > 0.0 && !warnedFixedStep && controls.deltaT > integrator.stableTimeStep(slide))
@@ -135,6 +136,16 @@ int main(int argc, char** argv)
             integrator.step(slide, s.dt, t);
             ++step;
             t = s.time;
+            if (!sc.base.isPlanar() && !warnedPastBase
+                && (slide.x.back() > sc.base.length() || slide.x.front() < 0.0))
+            {
+                std::cout << "Warning: at t = " << t << " s the slide passed the "
+                          << (slide.x.back() > sc.base.length() ? "last" : "first")
+                          << " vertex of the base polyline (constant/sceneProperties, base.points); its end "
+                          << "segment is extended in a straight line: lengthen the polyline if that is not the "
+                          << "terrain\n";
+                warnedPastBase = true;
+            }
 
             if (rc.stopAtRest && dam::DamIntegrator::atRest(slide, rc.restVelocity, speedBeforeStep))
             {
