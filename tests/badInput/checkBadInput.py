@@ -21,6 +21,9 @@ from concurrent.futures import ThreadPoolExecutor
 
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
+sys.path.insert(0, os.path.join(top, "validation", "lib"))
+from cfdcase import copy_scene  # noqa: E402
+
 flume = os.path.join(top, "tutorials", "kroneWrightRun15")
 ALL = ["slideDAM", "slideMPM", "slideFoamCase", "slideFoam"]
 # What slideFoamCase writes; none of it may be left after a refused scene.
@@ -47,7 +50,7 @@ def prepare_bases(bindir, work, apps):
     """The flume, short; for slideFoam also meshed (coarse) as Allrun would."""
     base = os.path.join(work, "base")
     shutil.rmtree(base, ignore_errors=True)
-    shutil.copytree(flume, base, ignore=shutil.ignore_patterns("postProcessing", "log.*"))
+    copy_scene(flume, base)
     bases = {a: base for a in apps}
     if "slideFoamCase" in apps or "slideFoam" in apps:
         # slideFoamCase sizes the mesh from slideDAM's runout: give it one.

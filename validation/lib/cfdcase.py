@@ -9,7 +9,7 @@ import subprocess
 
 import numpy as np
 
-from runner import slidefoam_env, which
+from runner import TOP, slidefoam_env, which
 
 GENERATED = ["0", "0.orig", "constant/polyMesh", "postProcessing", "processor*"]
 
@@ -24,13 +24,19 @@ def set_entry(path, key, value):
     open(path, "w").write(new)
 
 
+def copy_scene(template, dest):
+    """A copy of a case holding its scene only: RunFunctions' cleanCase removes what runs left in the copy (time
+    directories with slideFoam's fields and the DAM/MPM states, logs, postProcessing, slideFoamCase's files)."""
+    shutil.copytree(template, dest, ignore=shutil.ignore_patterns("postProcessing", "processor*"))
+    subprocess.run(["bash", "-c", ". '%s/bin/tools/RunFunctions' && cleanCase" % TOP], cwd=dest, check=True)
+
+
 def make_case(template, work, name, scene=None, control=None, cfd=None):
     """A copy of a scene case with scene/control entries replaced and system/cfdDict written."""
     d = os.path.join(work, name)
     if os.path.exists(d):
         shutil.rmtree(d)
-    shutil.copytree(template, d, ignore=shutil.ignore_patterns("postProcessing", "log.*", "processor*", "0", "0.orig",
-                                                               "polyMesh", "[0-9]*.[0-9]*", "*.foam"))
+    copy_scene(template, d)
     for k, v in (scene or {}).items():
         set_entry(os.path.join(d, "constant", "sceneProperties"), k, v)
     for k, v in (control or {}).items():
