@@ -157,6 +157,7 @@ int main(int argc, char** argv)
             ? output::availableMemoryBytes()/2 : 8ull << 30;
 
         bool atRest = false;
+        bool slowingDown = true;
         while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
@@ -194,9 +195,11 @@ int main(int argc, char** argv)
                        << "; the last good state is the one written at t = " << last.time << " s";
                 throw output::BlowUp(t, place.str(), next.finite ? "velocity" : "NaN", detail.str());
             }
+            // Slow is not rest while accelerating: a slide released under a small net force starts slowly.
+            slowingDown = next.maxSpeed <= stats.maxSpeed;
             stats = next;
 
-            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity)
+            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity && slowingDown)
             {
                 atRest = true;
                 write(t);
@@ -223,7 +226,7 @@ int main(int argc, char** argv)
                 progress.report(t, step);
             }
         }
-        if (!atRest) atRest = stats.maxSpeed < rc.restVelocity;
+        if (!atRest) atRest = stats.maxSpeed < rc.restVelocity && slowingDown;
 
         const mpm::HostPoints hp(points);
         const mpm::Mechanism mech = mpm::detectMechanism(hp, frame, H0, sc.g, d);
