@@ -9,18 +9,16 @@ scene, and writes sensitivity.md and sensitivity.png here. With --mpm, slideMPM
 (the tutorial's mpmDict) runs the tutorial scenes, the Finneidfjord Zone D variants
 and the escarpment's slab thicknesses too (~15 min in all on 2 cores).
 """
-import json
 import math
 import os
-import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
-from runner import TOP, slidefoam_env, which  # noqa: E402
+from cfdcase import make_case  # noqa: E402
+from runner import TOP, run_method  # noqa: E402
 
 
 def polyline(segments):
@@ -33,29 +31,12 @@ def polyline(segments):
     return "(" + " ".join("(%.3f %.3f)" % p for p in pts) + ")"
 
 
-def run(tutorial, scene_edits, apps=("slideDAM",)):
-    """Copies the tutorial's scene and system, applies {regex: replacement} to the scene, runs apps.
-    Returns {app: summary}."""
-    src = os.path.join(TOP, "tutorials", tutorial)
+def run(tutorial, scene, apps=("slideDAM",)):
+    """The tutorial's scene with the `scene` entries replaced, run by each of apps: {app: summary}."""
     work = tempfile.mkdtemp(prefix=tutorial + "-")
     try:
-        shutil.copytree(os.path.join(src, "system"), os.path.join(work, "system"))
-        os.makedirs(os.path.join(work, "constant"))
-        text = open(os.path.join(src, "constant", "sceneProperties")).read()
-        for pattern, new in scene_edits.items():
-            text, n = re.subn(pattern, new, text, flags=re.M)
-            if n != 1:
-                raise SystemExit("sensitivity.py: %r matched %d times in %s's scene" % (pattern, n, tutorial))
-        open(os.path.join(work, "constant", "sceneProperties"), "w").write(text)
-        out = {}
-        for app in apps:
-            with open(os.path.join(work, "log." + app), "w") as log:
-                rc = subprocess.run([which(app), "-case", work], stdout=log, stderr=subprocess.STDOUT,
-                                    env=slidefoam_env()).returncode
-            if rc != 0:
-                raise SystemExit("%s failed on a %s variant: %s" % (app, tutorial, open(log.name).read()[-2000:]))
-            out[app] = json.load(open(os.path.join(work, "postProcessing", app, "summary.json")))
-        return out
+        d = make_case(os.path.join(TOP, "tutorials", tutorial), work, "case", scene=scene)
+        return {app: run_method(app, d)[0] for app in apps}
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
@@ -65,9 +46,8 @@ def finneidfjord(mpm):
     rows = []
 
     def variant(label, zone_b=185.0, zone_c_end=1400.0, zone_d=2.0, C_F=0.003):
-        edits = {r"^    points .*$": "    points    %s;" % polyline([(zone_b, 0.94), (zone_c_end - zone_b, 0.46),
-                                                                      (400.0, -zone_d)]),
-                 r"^    C_F .*$": "    C_F       %g;" % C_F}
+        edits = {"points": polyline([(zone_b, 0.94), (zone_c_end - zone_b, 0.46), (400.0, -zone_d)]),
+                 "C_F": "%g" % C_F}
         apps = ("slideDAM", "slideMPM") if mpm and label.startswith(("tutorial", "Zone D rising")) else ("slideDAM",)
         r = run("finneidfjord", edits, apps)
         rows.append((label, {a: s["runout_m"] for a, s in r.items()}))
@@ -91,9 +71,8 @@ def escarpment(mpm):
     def variant(label, H=20.0, angle=20.0, slab=10.0, base=0.5):
         face = H/math.sin(math.radians(angle))
         taper = min(15.0, face/3.0)
-        edits = {r"^    points .*$": "    points    %s;" % polyline([(face, angle), (1000.0 + 40*H, base)]),
-                 r"^    thickness .*$": "    thickness  ((0 0) (%.3f %g) (%.3f %g) (%.3f 0));" % (
-                     taper, slab, face - taper, slab, face)}
+        edits = {"points": polyline([(face, angle), (1000.0 + 40*H, base)]),
+                 "thickness": "((0 0) (%.3f %g) (%.3f %g) (%.3f 0))" % (taper, slab, face - taper, slab, face)}
         apps = ("slideDAM", "slideMPM") if mpm and label.startswith(("tutorial", "slab")) else ("slideDAM",)
         r = run("mediterraneanEscarpment", edits, apps)
         rows.append((label, {a: s["runout_m"] for a, s in r.items()}))

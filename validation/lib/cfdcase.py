@@ -31,8 +31,9 @@ def copy_scene(template, dest):
     subprocess.run(["bash", "-c", ". '%s/bin/tools/RunFunctions' && cleanCase" % TOP], cwd=dest, check=True)
 
 
-def make_case(template, work, name, scene=None, control=None, cfd=None):
-    """A copy of a scene case with scene/control entries replaced and system/cfdDict written."""
+def make_case(template, work, name, scene=None, control=None, cfd=None, dicts=None):
+    """A copy of a scene case with scene/control entries replaced, system/cfdDict written from the `cfd` entries,
+    and whole files written from `dicts` ({path in the case: text}, e.g. {"system/mpmDict": "..."})."""
     d = os.path.join(work, name)
     if os.path.exists(d):
         shutil.rmtree(d)
@@ -45,6 +46,9 @@ def make_case(template, work, name, scene=None, control=None, cfd=None):
         with open(os.path.join(d, "system", "cfdDict"), "w") as f:
             for k, v in cfd.items():
                 f.write("%s %s;\n" % (k, v))
+    for rel, text in (dicts or {}).items():
+        with open(os.path.join(d, rel), "w") as f:
+            f.write(text)
     return d
 
 

@@ -22,3 +22,20 @@ def which(app):
         if os.access(p, os.X_OK):
             return p
     raise SystemExit("%s is not built: run ./Allwmake first" % app)
+
+
+def run_method(app, case_dir, env=None):
+    """Runs slideDAM or slideMPM (a name found on SlideFoam's PATH, or an executable's path, as CTest gives
+    it) on case_dir, log in log.<app>, and returns (summary, runout) as slidefoam_io reads them; a failed run
+    raises SystemExit with the end of its log."""
+    from slidefoam_io import read_runout, read_summary
+    exe = app if os.path.sep in app else which(app)
+    app = os.path.basename(app)
+    log = os.path.join(case_dir, "log." + app)
+    with open(log, "w") as f:
+        rc = subprocess.run([exe, "-case", case_dir], stdout=f, stderr=subprocess.STDOUT,
+                            env=dict(slidefoam_env(), **(env or {}))).returncode
+    if rc != 0:
+        raise SystemExit("%s failed on %s (exit %d):\n%s" % (app, case_dir, rc, open(log).read()[-2000:]))
+    out = os.path.join(case_dir, "postProcessing", app)
+    return read_summary(os.path.join(out, "summary.json")), read_runout(os.path.join(out, "runout.dat"))

@@ -13,13 +13,13 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
-from runner import TOP, slidefoam_env, which  # noqa: E402
+from cfdcase import make_case  # noqa: E402
+from runner import TOP, run_method  # noqa: E402
 from slidefoam_io import read_pvd, read_summary, read_vtp  # noqa: E402
 
 SNAPSHOTS = [(2, 10.0), (9, 20.0), (11, 10.0), (11, 30.0)]
@@ -38,22 +38,13 @@ def base_angle(case_dir):
 
 
 def run(case, end, work):
-    d = os.path.join(work, "case%02d" % case)
-    shutil.copytree(os.path.join(TOP, "tutorials", "table1", "case%02d" % case), d,
-                    ignore=shutil.ignore_patterns("postProcessing", "log.*"))
-    ctrl = os.path.join(d, "system", "controlDict")
-    text = open(ctrl).read()
-    text = re.sub(r"^endTime .*$", "endTime %g;" % end, text, flags=re.M)
-    text = re.sub(r"^stopAtRest .*$", "stopAtRest no;", text, flags=re.M)
-    text = re.sub(r"^writeInterval .*$", "writeInterval 1;", text, flags=re.M)
-    open(ctrl, "w").write(text)
-    open(os.path.join(d, "system", "damDict"), "w").write("setting fast;\ncolumns 800;\nwriteFields yes;\n")
-    open(os.path.join(d, "system", "mpmDict"), "w").write(
-        "setting fast;\ncellsPerHeight 10;\nparticlesPerCell 2;\nwriteFields yes;\nprogressInterval 30;\n")
+    d = make_case(os.path.join(TOP, "tutorials", "table1", "case%02d" % case), work, "case%02d" % case,
+                  control={"endTime": "%g" % end, "stopAtRest": "no", "writeInterval": 1},
+                  dicts={"system/damDict": "setting fast;\ncolumns 800;\nwriteFields yes;\n",
+                         "system/mpmDict": "setting fast;\ncellsPerHeight 10;\nparticlesPerCell 2;\n"
+                                           "writeFields yes;\nprogressInterval 30;\n"})
     for app in ("slideDAM", "slideMPM"):
-        with open(os.path.join(d, "log." + app), "w") as log:
-            subprocess.run([which(app), "-case", d], stdout=log, stderr=subprocess.STDOUT, env=slidefoam_env(),
-                           check=True)
+        run_method(app, d)
     return d
 
 
