@@ -87,12 +87,11 @@ double DamIntegrator::maxSpeed(const SlideColumns& s)
     return v;
 }
 
-bool DamIntegrator::atRest(const SlideColumns& s, double restVelocity, double previousMaxSpeed)
+bool DamIntegrator::atRest(const double maxSpeed, const double previousMaxSpeed, const double restVelocity)
 {
     // Slow is not enough: a slide that starts from rest under a small net force (a block
     // released on a gentle slope) is slow for its first steps but accelerating.
-    const double v = maxSpeed(s);
-    return v <= restVelocity && v <= previousMaxSpeed;
+    return maxSpeed <= restVelocity && maxSpeed <= previousMaxSpeed;
 }
 
 void DamIntegrator::step(SlideColumns& s, const double dt, const double time)

@@ -113,7 +113,9 @@ int main(int argc, char** argv)
         progress.report(t, step, true, "front = " + std::to_string(slide.front()) + " m");
 
         bool atRest = false;
-        double speedBeforeStep = dam::DamIntegrator::maxSpeed(slide);
+        // The fastest node after the last step and before it (one pass over the nodes per step).
+        double speed = dam::DamIntegrator::maxSpeed(slide);
+        double speedBeforeStep = speed;
         bool warnedFixedStep = false;
         bool warnedPastBase = false;
         while (schedule.running(t))
@@ -132,8 +134,9 @@ int main(int argc, char** argv)
                 throw output::BlowUp(t, "the slide", "time step", os.str());
             }
             const output::WriteSchedule::Step s = schedule.clip(t, dtStable);
-            speedBeforeStep = dam::DamIntegrator::maxSpeed(slide);
+            speedBeforeStep = speed;
             integrator.step(slide, s.dt, t);
+            speed = dam::DamIntegrator::maxSpeed(slide);
             ++step;
             t = s.time;
             if (!sc.base.isPlanar() && !warnedPastBase
@@ -147,7 +150,7 @@ int main(int argc, char** argv)
                 warnedPastBase = true;
             }
 
-            if (rc.stopAtRest && dam::DamIntegrator::atRest(slide, rc.restVelocity, speedBeforeStep))
+            if (rc.stopAtRest && dam::DamIntegrator::atRest(speed, speedBeforeStep, rc.restVelocity))
             {
                 atRest = true;
                 write(t);
@@ -173,7 +176,7 @@ int main(int argc, char** argv)
                 progress.report(t, step);
             }
         }
-        if (!atRest) atRest = dam::DamIntegrator::atRest(slide, rc.restVelocity, speedBeforeStep);
+        if (!atRest) atRest = dam::DamIntegrator::atRest(speed, speedBeforeStep, rc.restVelocity);
 
         const double mass = rho*slide.totalArea();
         output::Summary summary;

@@ -114,9 +114,10 @@ TEST(SlideDAM, SlowStartIsNotRest)
     runTo(integ, s, t, 0.05);
     ASSERT_GT(dam::DamIntegrator::maxSpeed(s), 0.0);
     ASSERT_LT(dam::DamIntegrator::maxSpeed(s), 0.01);
-    EXPECT_FALSE(dam::DamIntegrator::atRest(s, 0.01, before));
+    EXPECT_FALSE(dam::DamIntegrator::atRest(dam::DamIntegrator::maxSpeed(s), before, 0.01));
     // A slide slowing down below restVelocity is at rest.
-    EXPECT_TRUE(dam::DamIntegrator::atRest(s, 0.01, 2.0*dam::DamIntegrator::maxSpeed(s)));
+    const double now = dam::DamIntegrator::maxSpeed(s);
+    EXPECT_TRUE(dam::DamIntegrator::atRest(now, 2.0*now, 0.01));
 }
 
 TEST(SlideDAM, MassIsConservedToRoundOff)
