@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace slide
@@ -17,18 +18,13 @@ namespace mpm
 void MaterialPoints::allocate(const int n)
 {
     count = n;
-    position = ParticleVector("position", n);
-    velocity = ParticleVector("velocity", n);
-    affine = ParticleTensor("affine", n);
-    velocityGradient = ParticleTensor("velocityGradient", n);
-    stress = ParticleTensor("stress", n);
-    mass = ParticleScalar("mass", n);
-    volume = ParticleScalar("volume", n);
-    plasticShearStrain = ParticleScalar("plasticShearStrain", n);
-    strength = ParticleScalar("strength", n);
-    shearStrainRate = ParticleScalar("shearStrainRate", n);
-    plasticShearStrainRate = ParticleScalar("plasticShearStrainRate", n);
-    dilatation = ParticleScalar("dilatation", n);
+    forEachView([n](const char* name, auto& v) { v = std::decay_t<decltype(v)>(std::string(name), static_cast<std::size_t>(n)); });
+}
+
+void MaterialPoints::resize(const int n)
+{
+    count = n;
+    forEachView([n](const char*, auto& v) { Kokkos::resize(v, n); });
 }
 
 void MaterialPoints::sortByCell(const BackgroundGrid& grid)
@@ -48,18 +44,7 @@ void MaterialPoints::sortByCell(const BackgroundGrid& grid)
     using Op = Kokkos::BinOp1D<KeyView>;
     Kokkos::BinSort<KeyView, Op> sorter(keys, Op(nBins, 0, nBins - 1), false);
     sorter.create_permute_vector();
-    sorter.sort(position);
-    sorter.sort(velocity);
-    sorter.sort(affine);
-    sorter.sort(velocityGradient);
-    sorter.sort(stress);
-    sorter.sort(mass);
-    sorter.sort(volume);
-    sorter.sort(plasticShearStrain);
-    sorter.sort(strength);
-    sorter.sort(shearStrainRate);
-    sorter.sort(plasticShearStrainRate);
-    sorter.sort(dilatation);
+    forEachView([&sorter](const char*, auto& v) { sorter.sort(v); });
 }
 
 long long MaterialPoints::estimateCount(const scene::Scene& sc, const double d, const int ppc)
@@ -161,6 +146,7 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
     auto V = Kokkos::create_mirror_view(mp.volume);
     auto sig = Kokkos::create_mirror_view(mp.stress);
     auto su = Kokkos::create_mirror_view(mp.strength);
+    auto len = Kokkos::create_mirror_view(mp.size);
     for (int p = 0; p < mp.count; ++p)
     {
         x(p, 0) = hx[p];
@@ -173,12 +159,15 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
         if (tau > suo) UndrainedClay::returnToYieldSurface(s, tau, suo);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         su(p) = suo;
+        len(p, 0) = a;
+        len(p, 1) = a;
     }
     Kokkos::deep_copy(mp.position, x);
     Kokkos::deep_copy(mp.mass, m);
     Kokkos::deep_copy(mp.volume, V);
     Kokkos::deep_copy(mp.stress, sig);
     Kokkos::deep_copy(mp.strength, su);
+    Kokkos::deep_copy(mp.size, len);
     return mp;
 }
 

@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "particleSplitting", "maxParticleStretch", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -66,6 +66,12 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
     }
+    c.particleSplitting = d.getBool("particleSplitting", true);
+    if (d.found("maxParticleStretch"))
+    {
+        c.maxParticleStretch = d.getScalarInRange("maxParticleStretch", 1.5, 1e3, true, true,
+                                                  "domain length / seeded particle spacing that splits a particle");
+    }
     c.writeFields = d.getBool("writeFields", true);
     c.writeState = d.getBool("writeState", true);
     if (d.found("progressInterval"))
@@ -86,6 +92,8 @@ std::string MpmControls::describe() const
        << ", Courant " << courant << " (Eq. 6)"
        << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())
        << ", E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
+    if (particleSplitting) os << ", particles split when stretched beyond " << maxParticleStretch << "x their spacing";
+    else os << ", no particle splitting";
     return os.str();
 }
 

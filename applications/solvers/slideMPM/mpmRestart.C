@@ -68,25 +68,6 @@ void fill(const output::StateFile& f, const std::string& path, const std::string
     Kokkos::deep_copy(v, h);
 }
 
-// Every per-particle view the state holds, by its name in the file: the one list
-// both writeState and readState go through.
-template<class Points, class F>
-void forEachParticleView(Points& mp, F&& f)
-{
-    f("position", mp.position);
-    f("velocity", mp.velocity);
-    f("affine", mp.affine);
-    f("velocityGradient", mp.velocityGradient);
-    f("stress", mp.stress);
-    f("mass", mp.mass);
-    f("volume", mp.volume);
-    f("plasticShearStrain", mp.plasticShearStrain);
-    f("strength", mp.strength);
-    f("shearStrainRate", mp.shearStrainRate);
-    f("plasticShearStrainRate", mp.plasticShearStrainRate);
-    f("dilatation", mp.dilatation);
-}
-
 } // namespace
 
 void writeState(const std::string& caseDir, const RestartPoint& at, const MaterialPoints& mp)
@@ -100,7 +81,7 @@ void writeState(const std::string& caseDir, const RestartPoint& at, const Materi
                     at.stats.kineticEnergy, at.stats.finite ? 1.0 : 0.0});
     f.add("count", static_cast<double>(mp.count));
     f.add("spacing", mp.spacing);
-    forEachParticleView(mp, [&](const char* name, const auto& v) { f.add(name, flatten(v)); });
+    mp.forEachView([&](const char* name, const auto& v) { f.add(name, flatten(v)); });
     f.write(output::statePath(caseDir, at.time, "slideMPM"));
 }
 
@@ -111,7 +92,7 @@ RestartPoint readState(const std::string& path, MaterialPoints& mp)
     if (!(count >= 1.0 && count < 2e9)) throw scene::InputError(path, 0, "count", "not a particle count");
     mp.allocate(static_cast<int>(count));
     mp.spacing = f.scalar("spacing");
-    forEachParticleView(mp, [&](const char* name, const auto& v) { fill(f, path, name, v); });
+    mp.forEachView([&](const char* name, const auto& v) { fill(f, path, name, v); });
 
     RestartPoint at;
     static_cast<output::RestartClock&>(at) = output::RestartClock::readFrom(f);

@@ -158,6 +158,8 @@ int main(int argc, char** argv)
 
         bool atRest = false;
         bool slowingDown = true;
+        double particleUpdates = 0.0;
+        const mpm::ParticleSplitting& splitting = integrator.splitting();
         while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
@@ -168,11 +170,26 @@ int main(int argc, char** argv)
                    << "than is free";
                 throw output::BlowUp(t, "the particle cloud", "grid extent", os.str());
             }
-            if (step > 0 && step % mpm::sortInterval == 0) points.sortByCell(grid);
+            if (step > 0 && step % mpm::sortInterval == 0)
+            {
+                const unsigned long long avail = output::availableMemoryBytes();
+                const long long maxCount = avail > 0 ? avail*8/10/mpm::MaterialPoints::bytesPerParticle : 1ll << 40;
+                const long long added = splitting.split(points, grid, frame.level, maxCount);
+                if (added < 0)
+                {
+                    std::ostringstream os;
+                    os << "splitting " << -added << " stretched particles would take the run to "
+                       << points.count - added << " particles, more memory than is free; set particleSplitting no "
+                       << "in system/mpmDict; the last good state is the one written at t = " << last.time << " s";
+                    throw output::BlowUp(t, "the particle cloud", "particle count", os.str());
+                }
+                points.sortByCell(grid);
+            }
             const output::WriteSchedule::Step s = schedule.clip(t, integrator.timeStep(d, stats.maxSpeed));
             const mpm::StepStatistics next = integrator.step(points, grid, s.dt);
             ++step;
             t = s.time;
+            particleUpdates += points.count;
 
             // Runaway: faster than a fall from the highest start point to the lowest
             // point reached could make it, with a factor 2 of margin.
@@ -245,7 +262,7 @@ int main(int argc, char** argv)
         summary.addNumber("cells_per_height", controls.cellsPerHeight);
         summary.addNumber("particles_per_cell", controls.particlesPerCell);
         summary.addNumber("steps", static_cast<double>(step));
-        summary.addNumber("particle_updates_per_second", step*static_cast<double>(points.count)/summary.wallTime);
+        summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);
         summary.addNumber("final_length_m", last.front - last.rear);
         summary.addNumber("max_thickness_m", last.maxThickness);
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
@@ -262,7 +279,7 @@ int main(int argc, char** argv)
         std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
                   << (atRest ? "at rest" : "still moving") << "), mechanism: " << runMechanism << "\n"
                   << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
-                  << summary.wallTime << " s, " << step*static_cast<double>(points.count)/summary.wallTime
+                  << summary.wallTime << " s, " << particleUpdates/summary.wallTime
                   << " particle-updates/s on " << backend << "\nEnd\n" << std::endl;
         return 0;
     });

@@ -108,6 +108,7 @@ TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay
                                const MpmControls& controls, const double density)
 :
     frame_(frame), clay_(clay), contact_(contact), controls_(controls),
+    splitting_{controls.particleSplitting, controls.maxParticleStretch},
     waveSpeed_(std::sqrt(clay.constrainedModulus()/density))
 {}
 
@@ -381,6 +382,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
     const auto plasticRate = mp.plasticShearStrainRate;
     const auto x = mp.position;
     const auto v = mp.velocity;
+    const auto len = mp.size;
     const BaseLevelSet level = frame_.level;
     Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
@@ -394,6 +396,8 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
         rate(p) = gdot;
         plasticRate(p) = dXi/dt;
         V(p) *= 1.0 + dil(p)*dt;
+        len(p, 0) *= std::exp(Lp[0]*dt);
+        len(p, 1) *= std::exp(Lp[3]*dt);
         const double xn = x(p, 0) + dt*v(p, 0);
         double yn = x(p, 1) + dt*v(p, 1);
         // The grid's contact keeps nodes out of the base, but a particle near it
@@ -437,7 +441,14 @@ void advanceTo(const TimeIntegrator& integrator, MaterialPoints& mp, BackgroundG
         {
             throw std::runtime_error("advanceTo: the grid outgrew 8 GiB");
         }
-        if (++steps % sortInterval == 0) mp.sortByCell(grid);
+        if (++steps % sortInterval == 0)
+        {
+            if (integrator.splitting().split(mp, grid, integrator.frame().level, 1ll << 30) < 0)
+            {
+                throw std::runtime_error("advanceTo: particle splitting would exceed 2^30 particles");
+            }
+            mp.sortByCell(grid);
+        }
         const double dt = std::min(integrator.timeStep(grid.d, stats.maxSpeed), T - t);
         stats = integrator.step(mp, grid, dt);
         t += dt;

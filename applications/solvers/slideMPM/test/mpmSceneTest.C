@@ -1,7 +1,8 @@
 // slideMPM on small scenes: conservation of the transfers, a rigid block on a
 // frictional slope against the sliding law, an elastic layer's settlement
 // under gravity against the analytical one (and what the B-bar changes at
-// nu = 0.49), no penetration of the base, and a stable slide that stays.
+// nu = 0.49), no penetration of the base, a stable slide that stays, and
+// particle splitting (what it keeps exactly, and what it changes in a runout).
 #include "backgroundGrid.H"
 #include "blockScene.H"
 #include "baseFrame.H"
@@ -324,6 +325,90 @@ TEST(SlideMPM, StableSlideStaysPut)
     double xiMax = 0.0;
     for (int p = 0; p < hp.count; ++p) xiMax = std::max(xiMax, hp.xi(p));
     EXPECT_EQ(xiMax, 0.0);   // it never yielded
+}
+
+TEST(SlideMPM, SplittingKeepsMassMomentumAndTheAffineField)
+{
+    // A block whose particles are pulled apart 3x along the base (as an
+    // elongating slide leaves them): every particle lies in an under-filled
+    // cell with a domain 3 spacings long, so each is split once along x.
+    scene::Interface iface;
+    SceneRun r(blockScene(5.0, 4.0, 1.0, 600.0, 200.0, iface), controls(8, 2), 100.0*200.0);
+    const double a = r.points.spacing;
+    {
+        auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.position);
+        auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.velocity);
+        auto C = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.affine);
+        auto len = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.size);
+        for (int p = 0; p < r.points.count; ++p)
+        {
+            x(p, 0) *= 3.0;
+            len(p, 0) *= 3.0;
+            len(p, 1) /= 3.0;
+            v(p, 0) = 1.0 + 0.1*x(p, 0);
+            v(p, 1) = -0.05*x(p, 1);
+            C(p, 0) = 0.1; C(p, 1) = 0.02; C(p, 2) = -0.03; C(p, 3) = -0.05;
+        }
+        Kokkos::deep_copy(r.points.position, x);
+        Kokkos::deep_copy(r.points.velocity, v);
+        Kokkos::deep_copy(r.points.affine, C);
+        Kokkos::deep_copy(r.points.size, len);
+    }
+    r.stats = mpm::TimeIntegrator::statistics(r.points);
+    const mpm::HostPoints before(r.points);
+    ASSERT_TRUE(r.grid.fit(r.stats.xmin, r.stats.xmax, r.stats.ymin, r.stats.ymax, 1ull << 30));
+    const int n = r.points.count;
+    EXPECT_EQ(r.integrator.splitting().split(r.points, r.grid, r.frame.level, 10*n), n);
+    const mpm::HostPoints after(r.points);
+    auto C = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.affine);
+    ASSERT_EQ(after.count, 2*n);
+    double m0 = 0.0, m1 = 0.0, px0 = 0.0, px1 = 0.0, py0 = 0.0, py1 = 0.0;
+    for (int p = 0; p < n; ++p)
+    {
+        m0 += before.mass(p);
+        px0 += before.mass(p)*before.velocity(p, 0);
+        py0 += before.mass(p)*before.velocity(p, 1);
+    }
+    for (int p = 0; p < 2*n; ++p)
+    {
+        m1 += after.mass(p);
+        px1 += after.mass(p)*after.velocity(p, 0);
+        py1 += after.mass(p)*after.velocity(p, 1);
+    }
+    EXPECT_EQ(m1, m0);
+    EXPECT_NEAR(px1, px0, 1e-13*std::fabs(px0));
+    EXPECT_NEAR(py1, py0, 1e-13*std::fabs(py0));
+    for (int p = 0; p < n; ++p)
+    {
+        const int c = n + p;   // every parent split: its child is n + p
+        // Halves a quarter of the parent's domain (0.75 a) either side along x,
+        // each with half its mass, volume and domain length.
+        EXPECT_NEAR(after.position(p, 0) - before.position(p, 0), 0.75*a, 1e-12);
+        EXPECT_NEAR(after.position(c, 0) - before.position(p, 0), -0.75*a, 1e-12);
+        EXPECT_EQ(after.position(c, 1), before.position(p, 1));
+        EXPECT_EQ(after.mass(c), 0.5*before.mass(p));
+        EXPECT_EQ(after.volume(p), 0.5*before.volume(p));
+        EXPECT_NEAR(after.size(p, 0), 1.5*a, 1e-12);
+        EXPECT_EQ(after.size(c, 1), before.size(p, 1));
+        // On the parent's affine velocity field v + C (x - x_p).
+        EXPECT_NEAR(after.velocity(p, 0), before.velocity(p, 0) + C(p, 0)*0.75*a, 1e-12);
+        EXPECT_NEAR(after.velocity(c, 1), before.velocity(p, 1) - C(p, 2)*0.75*a, 1e-12);
+        EXPECT_EQ(C(c, 1), C(p, 1));
+    }
+    // Domains as long, but in the seeded block, whose cells are full: nothing is split.
+    SceneRun full(blockScene(5.0, 4.0, 1.0, 600.0, 200.0, iface), controls(8, 2), 100.0*200.0);
+    auto len = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), full.points.size);
+    for (int p = 0; p < full.points.count; ++p) len(p, 0) = 3.0*a;
+    Kokkos::deep_copy(full.points.size, len);
+    ASSERT_TRUE(full.grid.fit(full.stats.xmin, full.stats.xmax, full.stats.ymin, full.stats.ymax, 1ull << 30));
+    EXPECT_EQ(full.integrator.splitting().split(full.points, full.grid, full.frame.level, 10*n), 0);
+    // A split that would pass the particle limit changes nothing and says how many it needed.
+    EXPECT_EQ(r.integrator.splitting().split(r.points, r.grid, r.frame.level, 2*n), 0);   // at rest: sizes 1.5 a
+    auto len2 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.size);
+    for (int p = 0; p < 2*n; ++p) len2(p, 0) = 3.0*a;
+    Kokkos::deep_copy(r.points.size, len2);
+    EXPECT_LT(r.integrator.splitting().split(r.points, r.grid, r.frame.level, 2*n), 0);
+    EXPECT_EQ(r.points.count, 2*n);
 }
 
 int main(int argc, char** argv)
