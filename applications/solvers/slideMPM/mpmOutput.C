@@ -44,14 +44,14 @@ HostPoints::HostPoints(const MaterialPoints& mp)
 double HostPoints::frontX() const
 {
     double x = -1e300;
-    for (int p = 0; p < count; ++p) x = std::max(x, position(p, 0) + 0.5*size(p, 0));
+    for (int p = 0; p < count; ++p) x = std::max(x, position(p, 0) + halfExtent(p, 0));
     return x;
 }
 
 double HostPoints::rearX() const
 {
     double x = 1e300;
-    for (int p = 0; p < count; ++p) x = std::min(x, position(p, 0) - 0.5*size(p, 0));
+    for (int p = 0; p < count; ++p) x = std::min(x, position(p, 0) - halfExtent(p, 0));
     return x;
 }
 
@@ -79,7 +79,7 @@ output::RunoutSample runoutSample(const HostPoints& hp, const BaseFrame& frame, 
         s.mass += hp.mass(p);
         s.kineticEnergy += 0.5*hp.mass(p)*v2;
         const long long c = static_cast<long long>(std::floor(x/cellSize));
-        const double h = y + 0.5*hp.size(p, 1) - frame.level.height(x);
+        const double h = y + hp.halfExtent(p, 1) - frame.level.height(x);
         auto it = top.find(c);
         if (it == top.end() || h > it->second) top[c] = h;
     }
@@ -171,8 +171,8 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
     {
         const int c = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
         const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
-        top[c] = std::max(top[c], h + 0.5*hp.size(p, 1));
-        bottom[c] = std::min(bottom[c], h - 0.5*hp.size(p, 1));
+        top[c] = std::max(top[c], h + hp.halfExtent(p, 1));
+        bottom[c] = std::min(bottom[c], h - hp.halfExtent(p, 1));
     }
     // Bodies: runs of occupied columns separated by at least two empty ones (2 H0/5).
     int empty = 0;

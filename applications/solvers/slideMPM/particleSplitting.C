@@ -66,6 +66,8 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
     Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
 
     const auto len = mp.size;
+    const auto vol = mp.volume;
+    const double minVolume = minVolumeFraction*mp.spacing*mp.spacing;
     const auto count = grid.averaging;
     Axes axis("splitAxis", n);
     Offsets offset("splitOffsets", n);
@@ -74,7 +76,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
     {
         const double lx = len(p, 0), ly = len(p, 1);
         int a = -1;
-        if (lx > maxLength || ly > maxLength)
+        if ((lx > maxLength || ly > maxLength) && 0.5*vol(p) >= minVolume)
         {
             int i, j;
             Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);

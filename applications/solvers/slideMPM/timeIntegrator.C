@@ -1,6 +1,7 @@
 #include "timeIntegrator.H"
 #include "quadraticBSpline.H"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -383,6 +384,9 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
     const auto x = mp.position;
     const auto v = mp.velocity;
     const auto len = mp.size;
+    // Beyond twice the splitting length a domain's stretch no longer says where
+    // the gaps are (a flow that folds its material fills them): capped there.
+    const double maxLength = 2.0*splitting_.maxStretch*mp.spacing;
     const BaseLevelSet level = frame_.level;
     Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
@@ -396,8 +400,8 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
         rate(p) = gdot;
         plasticRate(p) = dXi/dt;
         V(p) *= 1.0 + dil(p)*dt;
-        len(p, 0) *= std::exp(Lp[0]*dt);
-        len(p, 1) *= std::exp(Lp[3]*dt);
+        len(p, 0) = std::min(maxLength, len(p, 0)*std::exp(Lp[0]*dt));
+        len(p, 1) = std::min(maxLength, len(p, 1)*std::exp(Lp[3]*dt));
         const double xn = x(p, 0) + dt*v(p, 0);
         double yn = x(p, 1) + dt*v(p, 1);
         // The grid's contact keeps nodes out of the base, but a particle near it
