@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "particleSplitting", "maxParticleStretch", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -67,10 +67,10 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
     }
     c.particleSplitting = d.getBool("particleSplitting", true);
-    if (d.found("maxParticleStretch"))
+    if (d.found("maxParticleLength"))
     {
-        c.maxParticleStretch = d.getScalarInRange("maxParticleStretch", 1.5, 1e3, true, true,
-                                                  "domain length / seeded particle spacing that splits a particle");
+        c.maxParticleLength = d.getScalarInRange("maxParticleLength", 0.25, 100.0, true, true,
+                                                 "particle domain length [cells] beyond which a particle is split");
     }
     c.writeFields = d.getBool("writeFields", true);
     c.writeState = d.getBool("writeState", true);
@@ -92,7 +92,7 @@ std::string MpmControls::describe() const
        << ", Courant " << courant << " (Eq. 6)"
        << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())
        << ", E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
-    if (particleSplitting) os << ", particles split when stretched beyond " << maxParticleStretch << "x their spacing";
+    if (particleSplitting) os << ", particles split when longer than " << maxParticleLength << " cell(s)";
     else os << ", no particle splitting";
     return os.str();
 }

@@ -46,24 +46,14 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
 {
     if (!enabled || mp.count == 0) return 0;
     const int n = mp.count;
-    const double maxLength = maxStretch*mp.spacing;
+    const double longest = maxLength*grid.d;
     const double fullCell = (grid.d/mp.spacing)*(grid.d/mp.spacing);   // particles the seeding puts in a cell
 
     // Particles per cell.
     const auto x = mp.position;
     const double d = grid.d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0;
-    Kokkos::deep_copy(grid.averaging, 0.0);
-    grid.averagingScatter.reset_except(grid.averaging);
-    auto scatter = grid.averagingScatter;
-    Kokkos::parallel_for("particlesPerCell", Policy(0, n), KOKKOS_LAMBDA(const int p)
-    {
-        auto acc = scatter.access();
-        int i, j;
-        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
-        acc(i, j, 0) += 1.0;
-    });
-    Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
+    sumOverCells(grid, x, n, KOKKOS_LAMBDA(const int, double& a, double&) { a = 1.0; });
 
     const auto len = mp.size;
     const auto vol = mp.volume;
@@ -76,7 +66,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
     {
         const double lx = len(p, 0), ly = len(p, 1);
         int a = -1;
-        if ((lx > maxLength || ly > maxLength) && 0.5*vol(p) >= minVolume)
+        if ((lx > longest || ly > longest) && 0.5*vol(p) >= minVolume)
         {
             int i, j;
             Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);

@@ -109,7 +109,7 @@ TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay
                                const MpmControls& controls, const double density)
 :
     frame_(frame), clay_(clay), contact_(contact), controls_(controls),
-    splitting_{controls.particleSplitting, controls.maxParticleStretch},
+    splitting_{controls.particleSplitting, controls.maxParticleLength},
     waveSpeed_(std::sqrt(clay.constrainedModulus()/density))
 {}
 
@@ -204,23 +204,13 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
 
 void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGrid& grid) const
 {
-    const auto x = mp.position;
     const auto sig = mp.stress;
     const auto V = mp.volume;
-    const double d = grid.d, xOrigin = grid.xOrigin;
-    const int i0 = grid.i0, j0 = grid.j0;
-    Kokkos::deep_copy(grid.averaging, 0.0);
-    grid.averagingScatter.reset_except(grid.averaging);
-    auto scatter = grid.averagingScatter;
-    Kokkos::parallel_for("pressureToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    sumOverCells(grid, mp.position, mp.count, KOKKOS_LAMBDA(const int p, double& a, double& b)
     {
-        auto acc = scatter.access();
-        int i, j;
-        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
-        acc(i, j, 0) += -V(p)*(sig(p, 0) + sig(p, 1) + sig(p, 2))/3.0;
-        acc(i, j, 1) += V(p);
+        a = -V(p)*(sig(p, 0) + sig(p, 1) + sig(p, 2))/3.0;
+        b = V(p);
     });
-    Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
 }
 
 void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
@@ -349,19 +339,12 @@ void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid)
         });
         return;
     }
-    Kokkos::deep_copy(grid.averaging, 0.0);
-    grid.averagingScatter.reset_except(grid.averaging);
-    auto scatter = grid.averagingScatter;
     const auto avg = grid.averaging;
-    Kokkos::parallel_for("dilatationToCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
+    sumOverCells(grid, x, mp.count, KOKKOS_LAMBDA(const int p, double& a, double& b)
     {
-        auto acc = scatter.access();
-        int i, j;
-        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
-        acc(i, j, 0) += V(p)*(L(p, 0) + L(p, 3));
-        acc(i, j, 1) += V(p);
+        a = V(p)*(L(p, 0) + L(p, 3));
+        b = V(p);
     });
-    Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
     Kokkos::parallel_for("dilatationFromCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         int i, j;
@@ -370,7 +353,7 @@ void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid)
     });
 }
 
-void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
+void TimeIntegrator::updateStress(MaterialPoints& mp, const double cellSize, const double dt) const
 {
     const UndrainedClay clay = clay_;
     const auto L = mp.velocityGradient;
@@ -386,7 +369,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double dt) const
     const auto len = mp.size;
     // Beyond twice the splitting length a domain's stretch no longer says where
     // the gaps are (a flow that folds its material fills them): capped there.
-    const double maxLength = 2.0*splitting_.maxStretch*mp.spacing;
+    const double maxLength = 2.0*splitting_.maxLength*cellSize;
     const BaseLevelSet level = frame_.level;
     Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
@@ -431,7 +414,7 @@ StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, co
     updateGrid(grid, dt);
     const StepStatistics s = gridToParticle(mp, grid, dt);
     averageDilatation(mp, grid);
-    updateStress(mp, dt);
+    updateStress(mp, grid.d, dt);
     return s;
 }
 
