@@ -273,6 +273,8 @@ add("cfd-resolution-memory", "H0/2000 cells: more memory than the machine has", 
     cfd0[:-1] + ["cellsPerHeight  2000;", ""], len(cfd0), "cellsPerHeight", "slideFoamCase")
 add("cfd-unknown-key", "a typo in cfdDict (cellPerHeight)", "system/cfdDict", cfd0[:-1] + ["cellPerHeight   30;", ""],
     len(cfd0), "cellPerHeight", "slideFoamCase")
+add("mpm-split-length-zero", "particles split at zero length (every check would halve them all)", "system/mpmDict",
+    mpm0[:-1] + ["maxParticleLength 0;", ""], len(mpm0), "maxParticleLength", "slideMPM")
 
 
 def main():
