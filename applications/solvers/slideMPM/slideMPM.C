@@ -160,6 +160,9 @@ int main(int argc, char** argv)
         bool slowingDown = true;
         double particleUpdates = 0.0;
         const mpm::ParticleSplitting& splitting = integrator.splitting();
+        // Splitting may grow the cloud up to the memory free at the start (read once, not every check).
+        const long long maxParticles = output::availableMemoryBytes() > 0
+            ? output::availableMemoryBytes()*8/10/mpm::MaterialPoints::bytesPerParticle : 1ll << 40;
         while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
@@ -172,9 +175,7 @@ int main(int argc, char** argv)
             }
             if (step > 0 && step % mpm::sortInterval == 0)
             {
-                const unsigned long long avail = output::availableMemoryBytes();
-                const long long maxCount = avail > 0 ? avail*8/10/mpm::MaterialPoints::bytesPerParticle : 1ll << 40;
-                const long long added = splitting.split(points, grid, frame.level, maxCount);
+                const long long added = splitting.split(points, grid, frame.level, maxParticles);
                 if (added < 0)
                 {
                     std::ostringstream os;
