@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace slide
 {
@@ -96,6 +97,35 @@ double BaseProfile::arcLengthAtX(double x) const
     const Point2& a = vertices_[i];
     const Point2& b = vertices_[i + 1];
     return s_[i] + (x - a.x)/(b.x - a.x)*(s_[i + 1] - s_[i]);
+}
+
+void BaseProfile::coordinates(const double X, const double Z, double& s, double& h) const
+{
+    if (isPlanar())
+    {
+        const Point2 o = point(0.0), t = tangent(0.0), n = normal(0.0);
+        s = (X - o.x)*t.x + (Z - o.z)*t.z;
+        h = (X - o.x)*n.x + (Z - o.z)*n.z;
+        return;
+    }
+    double best = std::numeric_limits<double>::max();
+    for (int k = 0; k < nSegments(); ++k)
+    {
+        const double s0 = segmentStart(k);
+        const double s1 = k + 1 < nSegments() ? segmentStart(k + 1) : length();
+        const Point2 o = point(s0), t = tangent(0.5*(s0 + s1)), n = normal(0.5*(s0 + s1));
+        double u = (X - o.x)*t.x + (Z - o.z)*t.z;
+        const double lo = k == 0 ? -1e300 : 0.0, hi = k + 1 == nSegments() ? 1e300 : s1 - s0;
+        u = std::min(std::max(u, lo), hi);
+        const double px = o.x + u*t.x, pz = o.z + u*t.z;
+        const double dd = std::hypot(X - px, Z - pz);
+        if (dd < best)
+        {
+            best = dd;
+            s = s0 + u;
+            h = (X - o.x)*n.x + (Z - o.z)*n.z;
+        }
+    }
 }
 
 } // namespace scene

@@ -61,6 +61,7 @@ Description
 #include "slideRheology.H"
 #include "slideRunout.H"
 #include "outputContract.H"
+#include "fluxReconstruction.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -53,42 +53,6 @@ long long MaterialPoints::estimateCount(const scene::Scene& sc, const double d, 
     return static_cast<long long>(std::ceil(sc.slide.area()/(a*a)*1.05)) + 16;
 }
 
-namespace
-{
-
-// Arc length of the foot on the base and height above it of a global point
-// (nearest segment of the polyline).
-void baseCoordinates(const scene::BaseProfile& base, double X, double Z, double& s, double& dist)
-{
-    if (base.isPlanar())
-    {
-        const scene::Point2 o = base.point(0.0), t = base.tangent(0.0), n = base.normal(0.0);
-        s = (X - o.x)*t.x + (Z - o.z)*t.z;
-        dist = (X - o.x)*n.x + (Z - o.z)*n.z;
-        return;
-    }
-    double best = std::numeric_limits<double>::max();
-    for (int k = 0; k < base.nSegments(); ++k)
-    {
-        const double s0 = base.segmentStart(k);
-        const double s1 = k + 1 < base.nSegments() ? base.segmentStart(k + 1) : base.length();
-        const scene::Point2 o = base.point(s0), t = base.tangent(0.5*(s0 + s1)), n = base.normal(0.5*(s0 + s1));
-        double u = (X - o.x)*t.x + (Z - o.z)*t.z;
-        const double lo = k == 0 ? -1e300 : 0.0, hi = k + 1 == base.nSegments() ? 1e300 : s1 - s0;
-        u = std::min(std::max(u, lo), hi);
-        const double px = o.x + u*t.x, pz = o.z + u*t.z;
-        const double dd = std::hypot(X - px, Z - pz);
-        if (dd < best)
-        {
-            best = dd;
-            s = s0 + u;
-            dist = (X - o.x)*n.x + (Z - o.z)*n.z;
-        }
-    }
-}
-
-} // namespace
-
 MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& frame, const UndrainedClay& clay,
                                    const double nu, const double d, const int ppc, const bool geostatic)
 {
@@ -127,7 +91,7 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
             const double xf = frame.rearX + (i + 0.5)*a, yf = (j + 0.5)*a;
             double X, Z, s = 0.0, h = 0.0;
             frame.toGlobal(xf, yf, X, Z);
-            baseCoordinates(sc.base, X, Z, s, h);
+            sc.base.coordinates(X, Z, s, h);
             if (s < s0 || s > s1 || h <= 0.0) continue;
             const double H = sc.slide.thickness(s);
             if (h >= H) continue;
