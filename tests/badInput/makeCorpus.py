@@ -275,6 +275,8 @@ add("cfd-unknown-key", "a typo in cfdDict (cellPerHeight)", "system/cfdDict", cf
     len(cfd0), "cellPerHeight", "slideFoamCase")
 add("mpm-split-length-zero", "particles split at zero length (every check would halve them all)", "system/mpmDict",
     mpm0[:-1] + ["maxParticleLength 0;", ""], len(mpm0), "maxParticleLength", "slideMPM")
+add("cfd-end-after-scene", "slideFoam's end time (10 s) after the scene's (4.1 s)", "system/cfdDict",
+    cfd0[:-1] + ["endTime         10;", ""], len(cfd0), "endTime", "slideFoamCase")
 
 
 def main():

@@ -10,7 +10,7 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "baseRefinement", "baseGrowth", "regularisation", "plugCreepRate", "processors"});
+                      "baseRefinement", "baseGrowth", "regularisation", "plugCreepRate", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
     c.cellsPerHeight = c.setting == "reference" ? 60 : 20;
@@ -59,6 +59,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
             d.fail("processors", "must lie in [1, 4096], got " + std::to_string(c.processors));
         }
     }
+    if (d.found("endTime")) c.endTime = d.getScalarInRange("endTime", 0.0, 1e9, false, true, "slideFoam's end time [s]");
     return c;
 }
 
@@ -69,6 +70,7 @@ std::string CfdControls::describe() const
     if (baseRefinement > 1) os << " (H0/" << cellsPerHeight*baseRefinement << " on the base)";
     os << ", regularisation " << regularisation
        << ", processors " << processors;
+    if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";
     return os.str();
 }
 

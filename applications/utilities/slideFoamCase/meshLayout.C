@@ -46,6 +46,37 @@ MeshLayout MeshLayout::build(const scene::Scene& sc, const CfdControls& c, const
     const int nUniform = std::max(1, int(std::ceil((wanted - m.gradedHeight_)/dx - 1e-9)));
     m.ny_ = m.nGraded_ + nUniform;
     m.height_ = m.gradedHeight_ + nUniform*dx;
+    if (!sc.base.isPlanar())
+    {
+        // Vertex columns at the mesh's ends and at the kinks between them; each
+        // stretch gets whole cells of about dx along the base.
+        m.polyline_ = true;
+        const double s0 = m.x_[0], s1 = m.x_[1];
+        std::vector<double> s = {s0};
+        for (int k = 1; k < sc.base.nSegments(); ++k)
+        {
+            const double kink = sc.base.segmentStart(k);
+            if (kink > s0 + 0.5*dx && kink < s1 - 0.5*dx) s.push_back(kink);
+        }
+        s.push_back(s1);
+        m.x_.clear();
+        m.nx_ = 0;
+        double steepest = 0.0;
+        for (std::size_t k = 0; k < s.size(); ++k)
+        {
+            const scene::Point2 p = sc.base.point(s[k]);
+            m.x_.push_back(p.x);
+            m.yBase_.push_back(p.z);
+            if (k + 1 < s.size())
+            {
+                const int n = std::max(1, int(std::lround((s[k + 1] - s[k])/dx)));
+                m.nSegment_.push_back(n);
+                m.nx_ += n;
+                steepest = std::max(steepest, std::fabs(sc.base.angle(0.5*(s[k] + s[k + 1]))));
+            }
+        }
+        m.verticalScale_ = 1.0/std::cos(steepest);
+    }
     return m;
 }
 
@@ -63,12 +94,21 @@ std::string MeshLayout::describe() const
         os << " (" << nGraded_ << " graded rows from " << depth_/refinement_ << " m on the base up to "
            << gradedHeight_ << " m)";
     }
-    os << ", x in [" << x_[0] << ", " << x_[1] << "] m along the base, height " << height_ << " m";
+    if (polyline_)
+    {
+        os << ", vertical columns over " << nSegment_.size() << " stretches of the polyline, x in [" << x_.front()
+           << ", " << x_.back() << "] m, " << height_*verticalScale_ << " m high (vertically)";
+    }
+    else
+    {
+        os << ", x in [" << x_[0] << ", " << x_[1] << "] m along the base, height " << height_ << " m";
+    }
     return os.str();
 }
 
 std::string MeshLayout::blockMeshDict(const std::string& rearType) const
 {
+    if (polyline_) return polylineBlockMeshDict(rearType);
     // Vertices by level (bottom up), four per level: (x0, y, 0) (x1, y, 0) (x1, y, d) (x0, y, d).
     std::vector<double> levels = {0.0};
     if (nGraded_ > 0) levels.push_back(gradedHeight_);
@@ -146,6 +186,7 @@ std::vector<double> MeshLayout::cellCentreHeights() const
 
 std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
 {
+    if (polyline_) return polylineSlideFraction(sc);
     // blockMesh's cell order: x fastest, then y.
     std::vector<double> alpha;
     alpha.reserve(static_cast<std::size_t>(nCells()));
@@ -155,6 +196,98 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
         for (int i = 0; i < nx_; ++i)
         {
             alpha.push_back(normal < sc.slide.thickness(x_[0] + (i + 0.5)*dx) ? 1.0 : 0.0);
+        }
+    }
+    return alpha;
+}
+
+std::string MeshLayout::polylineBlockMeshDict(const std::string& rearType) const
+{
+    std::vector<double> levels = {0.0};
+    if (nGraded_ > 0) levels.push_back(gradedHeight_);
+    levels.push_back(height_);
+    const int nCol = static_cast<int>(x_.size());
+    // Vertex (level, column, side): side 0 at z = 0, 1 at z = depth.
+    auto v = [&](int l, int k, int side) { return std::to_string(2*(l*nCol + k) + side); };
+    std::ostringstream os;
+    os << "scale 1;\n\nvertices\n(\n";
+    for (double h : levels)
+    {
+        for (int k = 0; k < nCol; ++k)
+        {
+            const double y = yBase_[k] + h*verticalScale_;
+            os << "    (" << num(x_[k]) << " " << num(y) << " 0) (" << num(x_[k]) << " " << num(y) << " "
+               << num(depth_) << ")\n";
+        }
+    }
+    const int nLayers = int(levels.size()) - 1;
+    os << ");\n\nblocks\n(\n";
+    for (int l = 0; l < nLayers; ++l)
+    {
+        const bool graded = nGraded_ > 0 && l == 0;
+        for (int k = 0; k + 1 < nCol; ++k)
+        {
+            os << "    hex (" << v(l, k, 0) << " " << v(l, k + 1, 0) << " " << v(l + 1, k + 1, 0) << " "
+               << v(l + 1, k, 0) << " " << v(l, k, 1) << " " << v(l, k + 1, 1) << " " << v(l + 1, k + 1, 1) << " "
+               << v(l + 1, k, 1) << ") (" << nSegment_[k] << " " << (graded ? nGraded_ : ny_ - nGraded_)
+               << " 1) simpleGrading (1 " << num(graded ? refinement_ : 1.0) << " 1)\n";
+        }
+    }
+    auto face = [&](int la, int ka, int lb, int kb)
+    {
+        return " (" + v(la, ka, 0) + " " + v(la, ka, 1) + " " + v(lb, kb, 1) + " " + v(lb, kb, 0) + ")";
+    };
+    std::string base, top, up, down, sides;
+    for (int k = 0; k + 1 < nCol; ++k)
+    {
+        base += face(0, k, 0, k + 1);
+        top += face(nLayers, k + 1, nLayers, k);
+        for (int l = 0; l < nLayers; ++l)
+        {
+            sides += " (" + v(l, k, 0) + " " + v(l + 1, k, 0) + " " + v(l + 1, k + 1, 0) + " " + v(l, k + 1, 0)
+                     + ") (" + v(l, k, 1) + " " + v(l, k + 1, 1) + " " + v(l + 1, k + 1, 1) + " " + v(l + 1, k, 1)
+                     + ")";
+        }
+    }
+    for (int l = 0; l < nLayers; ++l)
+    {
+        up += face(l + 1, 0, l, 0);
+        down += face(l, nCol - 1, l + 1, nCol - 1);
+    }
+    os << ");\n\nedges\n(\n);\n\nboundary\n(\n"
+       << "    base\n    {\n        type wall;\n        faces (" << base << " );\n    }\n"
+       << "    top\n    {\n        type patch;\n        faces (" << top << " );\n    }\n"
+       << "    upslope\n    {\n        type " << rearType << ";\n        faces (" << up << " );\n    }\n"
+       << "    downslope\n    {\n        type patch;\n        faces (" << down << " );\n    }\n"
+       << "    frontAndBack\n    {\n        type empty;\n        faces (" << sides << " );\n    }\n"
+       << ");\n";
+    return os.str();
+}
+
+std::vector<double> MeshLayout::polylineSlideFraction(const scene::Scene& sc) const
+{
+    // blockMesh's cell order: block by block (layer, then stretch), in each x fastest.
+    std::vector<double> alpha;
+    alpha.reserve(static_cast<std::size_t>(nCells()));
+    const std::vector<double> heights = cellCentreHeights();
+    const int nLayers = nGraded_ > 0 ? 2 : 1;
+    for (int l = 0; l < nLayers; ++l)
+    {
+        const int j0 = l == 0 ? 0 : nGraded_, j1 = (nGraded_ > 0 && l == 0) ? nGraded_ : ny_;
+        for (std::size_t k = 0; k < nSegment_.size(); ++k)
+        {
+            for (int j = j0; j < j1; ++j)
+            {
+                for (int i = 0; i < nSegment_[k]; ++i)
+                {
+                    const double f = (i + 0.5)/nSegment_[k];
+                    const double X = x_[k] + f*(x_[k + 1] - x_[k]);
+                    const double Y = yBase_[k] + f*(yBase_[k + 1] - yBase_[k]) + heights[j]*verticalScale_;
+                    double s, h;
+                    sc.base.coordinates(X, Y, s, h);
+                    alpha.push_back(h > 0.0 && h < sc.slide.thickness(s) ? 1.0 : 0.0);
+                }
+            }
         }
     }
     return alpha;

@@ -1,10 +1,12 @@
 // slideFoamCase: builds slideFoam's CFD case from the scene every method reads
 // (constant/sceneProperties, system/controlDict) and system/cfdDict, in the
 // same case directory, the OpenFOAM way:
-//   system/blockMeshDict    a 2D mesh along the planar base (x along the slope,
-//                           y normal to it, gravity tilted), sized to the slide's reach
+//   system/blockMeshDict    a 2D mesh along the base, sized to the slide's reach:
+//                           planar, in the slope's frame (x along the slope, y
+//                           normal to it, gravity tilted); polyline, vertical
+//                           columns over the segments in the global frame
 //   system/fvSchemes, fvSolution, decomposeParDict
-//   constant/g              gravity in the slope's frame
+//   constant/g              gravity in the mesh's frame
 //   constant/transportProperties, turbulenceProperties
 //   0.orig/                 alpha.slide (the slide's initial extent), U, p_rgh,
 //                           xi with the base condition
@@ -119,13 +121,11 @@ int main(int argc, char** argv)
         const cfd::CfdControls c = cfd::CfdControls::read(cfdDict, args.get("setting"));
         const std::string cfdFile = caseDir + "/system/cfdDict";
 
-        if (!sc.base.isPlanar())
+        if (c.endTime > 0.0 && !(c.endTime > sc.control.startTime && c.endTime <= sc.control.endTime))
         {
-            // Measured: on a polyline base meshed with vertical columns (sheared cells,
-            // gravity down) slideFoam's solution blew up within 3 steps at 3.4 deg.
-            scene::Dictionary::readFile(caseDir + "/" + scene::Scene::sceneFile()).subDict("base")
-                .fail("profile", "slideFoamCase meshes planar bases only; a polyline base runs with slideDAM "
-                      "and slideMPM (validation/cfd/README.md)");
+            cfdDict.fail("endTime", "slideFoam's end time " + num(c.endTime) + " s must lie after the start time "
+                         + num(sc.control.startTime) + " s and not after the scene's end time " + num(sc.control.endTime)
+                         + " s (system/controlDict)");
         }
         const double H0 = sc.slide.height;
         double reach = c.reach;
@@ -208,9 +208,17 @@ int main(int argc, char** argv)
         {
             std::ostringstream os;
             os << header("uniformDimensionedVectorField", "g", "constant");
-            os << "// planar base at " << num(theta*180.0/pi) << " deg: x along the slope, y normal to it\n"
-               << "dimensions      [0 1 -2 0 0 0 0];\nvalue           (" << num(sc.g*std::sin(theta)) << " "
-               << num(-sc.g*std::cos(theta)) << " 0);\n";
+            if (sc.base.isPlanar())
+            {
+                os << "// planar base at " << num(theta*180.0/pi) << " deg: x along the slope, y normal to it\n"
+                   << "dimensions      [0 1 -2 0 0 0 0];\nvalue           (" << num(sc.g*std::sin(theta)) << " "
+                   << num(-sc.g*std::cos(theta)) << " 0);\n";
+            }
+            else
+            {
+                os << "// polyline base: x horizontal, y up\n"
+                   << "dimensions      [0 1 -2 0 0 0 0];\nvalue           (0 " << num(-sc.g) << " 0);\n";
+            }
             writeFile(caseDir + "/constant/g", os.str());
         }
         {

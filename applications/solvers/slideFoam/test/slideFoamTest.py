@@ -13,6 +13,10 @@ generated from SlideFoam scenes by slideFoamCase:
   remoulding  xi grows only in yielded slide material and weakens it: the same
               slide runs further with remoulding than without
   parallel    the flume on 2 MPI ranks (decomposePar) matches the serial run
+  polyline    the flume's slope given as a polyline (vertical columns, gravity
+              down: faces not aligned with the axes) runs as the planar scene in
+              the slope's frame; over a kink onto a gentler slope it runs shorter;
+              slide area, volume and alpha bounds kept on both
 
 Usage: slideFoamTest.py NAME [workDir]"""
 import os
@@ -203,6 +207,45 @@ def test_parallel(work):
     # The ranks' GAMG agglomerations differ, and p_rgh is solved to relTol 0.01 before its final corrector.
     check(du < 0.005*umax, "U in the slide: max |difference| %.2g m/s, %.2g %% of the largest speed (< 0.5 %%)"
           % (du, 100*du/umax))
+
+
+def polyline_case(work, name, points):
+    c = make_case(FLUME, work, name, control={"endTime": 2.0, "writeInterval": 0.5},
+                  cfd={"cellsPerHeight": 10, "reach": 3})
+    p = os.path.join(c, "constant", "sceneProperties")
+    text = open(p).read()
+    i = text.index("profile   planar;")
+    j = text.index("interface", i)
+    open(p, "w").write(text[:i] + "profile   polyline;\n    points    (%s);\n    " % " ".join("(%.9g %.9g)" % xz for xz in points)
+                       + text[j:])
+    prepare(c)
+    return c
+
+
+def test_polyline(work):
+    t = np.tan(np.radians(3.43))
+    planar = flume_case(work, "polyline_planar", end=2.0, write=0.5)
+    straight = polyline_case(work, "polyline_straight", [(0, 0), (3, -3*t), (8, -8*t)])
+    # 3.43 deg for 2 m, then 0.5 deg.
+    kinked = polyline_case(work, "polyline_kink", [(0, 0), (2, -2*t), (8, -2*t - 6*np.tan(np.radians(0.5)))])
+    for c in (planar, straight, kinked):
+        run_slidefoam(c)
+    area = 1.8*0.3
+    for label, c in (("straight", straight), ("kink", kinked)):
+        r, s = runout(c), summary(c)
+        # The mass column of runout.dat is rho' times the slide's area (depth 1 m).
+        a0 = r["mass"][0]/1073.0
+        check(abs(a0/area - 1) < 0.01, "%s polyline: initial slide area %.4f m2, scene %.4f m2 (within 1 %%)"
+              % (label, a0, area))
+        check(abs(s["volume_relative_change"]) < 0.005, "%s polyline: slide volume change %.2e (within 0.5 %%)"
+              % (label, s["volume_relative_change"]))
+        check(s["alpha_min"] > -1e-3 and s["alpha_max"] < 1 + 1e-3, "%s polyline: alpha in [0, 1] within 1e-3: "
+              "[%.3g, %.6f]" % (label, s["alpha_min"], s["alpha_max"]))
+    fp, fs, fk = (summary(c)["final_length_m"] for c in (planar, straight, kinked))
+    check(abs(fs/fp - 1) < 0.03, "the slope as a polyline (vertical columns, gravity down): slide length at 2 s "
+          "%.4f m, planar in the slope's frame %.4f m (within 3 %%)" % (fs, fp))
+    check(fk < fs - 0.02, "onto a 0.5 deg slope 0.2 m ahead of the front the slide runs shorter: %.4f m < %.4f m"
+          % (fk, fs))
 
 
 def main():
