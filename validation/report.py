@@ -231,8 +231,10 @@ def field_section(field):
     if not field:
         return [], {}
     lines = ["### Field cases", "",
-             "The tutorials' runs (`field/runs.py`); slideFoam meshes planar bases only and refuses both (its message "
-             "is in the table). Geometry and its sensitivity: `field/sensitivity.md`.", "",
+             "The tutorials' runs (`field/runs.py`), all three methods on the polyline bases (slideFoam on vertical "
+             "columns, gravity down). slideFoam cannot carry the Finneidfjord block (a 6.8e6 Pa s plug; "
+             "`cfd/README.md`): it runs to 60 s only (`system/cfdDict` endTime), and its runout is where the block "
+             "was then. Geometry and its sensitivity: `field/sensitivity.md`.", "",
              "| case | paper / observed [m] | method | runout [m] | peak front velocity [m/s] | mechanism | wall [s] |",
              "|---|---|---|---|---|---|---|"]
     hist = {}

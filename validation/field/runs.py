@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Runs the field tutorials (tutorials/finneidfjord, tutorials/mediterraneanEscarpment)
-with their Allrun (slideDAM, slideMPM, slideFoam's refusal of a polyline base, then
+with their Allrun (slideDAM, slideMPM, slideFoam on the polyline base, then
 compareMethods) and stores what compareMethods wrote in runs.json here, for
-validation/report.py. ~3 min on 2 cores.
+validation/report.py. ~20 min on 2 cores (slideFoam on Finneidfjord 9 min).
 
 Usage: validation/field/runs.py [--stored]   (--stored: collect without running)
 """
