@@ -106,13 +106,24 @@ std::string MeshLayout::describe() const
     return os.str();
 }
 
+std::vector<double> MeshLayout::layerLevels() const
+{
+    std::vector<double> levels = {0.0};
+    if (nGraded_ > 0) levels.push_back(gradedHeight_);
+    levels.push_back(height_);
+    return levels;
+}
+
+int MeshLayout::layerRows(const int layer) const
+{
+    return nGraded_ > 0 && layer == 0 ? nGraded_ : ny_ - nGraded_;
+}
+
 std::string MeshLayout::blockMeshDict(const std::string& rearType) const
 {
     if (polyline_) return polylineBlockMeshDict(rearType);
     // Vertices by level (bottom up), four per level: (x0, y, 0) (x1, y, 0) (x1, y, d) (x0, y, d).
-    std::vector<double> levels = {0.0};
-    if (nGraded_ > 0) levels.push_back(gradedHeight_);
-    levels.push_back(height_);
+    const std::vector<double> levels = layerLevels();
     std::ostringstream os;
     os << "scale 1;\n\nvertices\n(\n";
     for (double y : levels)
@@ -141,7 +152,7 @@ std::string MeshLayout::blockMeshDict(const std::string& rearType) const
     for (int l = 0; l < nBlocks; ++l)
     {
         const bool graded = nGraded_ > 0 && l == 0;
-        os << "    " << hex(l) << " (" << nx_ << " " << (graded ? nGraded_ : ny_ - nGraded_) << " 1) simpleGrading (1 "
+        os << "    " << hex(l) << " (" << nx_ << " " << layerRows(l) << " 1) simpleGrading (1 "
            << num(graded ? refinement_ : 1.0) << " 1)\n";
     }
     std::string up, down, sides;
@@ -186,16 +197,32 @@ std::vector<double> MeshLayout::cellCentreHeights() const
 
 std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
 {
-    if (polyline_) return polylineSlideFraction(sc);
-    // blockMesh's cell order: x fastest, then y.
+    // blockMesh's cell order: block by block (layer, then stretch of the base), in each x fastest, then y.
     std::vector<double> alpha;
     alpha.reserve(static_cast<std::size_t>(nCells()));
-    const double dx = (x_[1] - x_[0])/nx_;
-    for (const double normal : cellCentreHeights())
+    const std::vector<double> heights = cellCentreHeights();
+    const int nStretches = polyline_ ? static_cast<int>(nSegment_.size()) : 1;
+    const int nLayers = static_cast<int>(layerLevels().size()) - 1;
+    for (int l = 0, j0 = 0; l < nLayers; j0 += layerRows(l), ++l)
     {
-        for (int i = 0; i < nx_; ++i)
+        for (int k = 0; k < nStretches; ++k)
         {
-            alpha.push_back(normal < sc.slide.thickness(x_[0] + (i + 0.5)*dx) ? 1.0 : 0.0);
+            const int n = polyline_ ? nSegment_[k] : nx_;
+            for (int j = j0; j < j0 + layerRows(l); ++j)
+            {
+                for (int i = 0; i < n; ++i)
+                {
+                    const double f = (i + 0.5)/n;
+                    const double X = x_[k] + f*(x_[k + 1] - x_[k]);
+                    double s = X, h = heights[j];   // planar: x is the arc length, y the height
+                    if (polyline_)
+                    {
+                        const double Y = yBase_[k] + f*(yBase_[k + 1] - yBase_[k]) + heights[j]*verticalScale_;
+                        sc.base.coordinates(X, Y, s, h);
+                    }
+                    alpha.push_back(h > 0.0 && h < sc.slide.thickness(s) ? 1.0 : 0.0);
+                }
+            }
         }
     }
     return alpha;
@@ -203,9 +230,7 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
 
 std::string MeshLayout::polylineBlockMeshDict(const std::string& rearType) const
 {
-    std::vector<double> levels = {0.0};
-    if (nGraded_ > 0) levels.push_back(gradedHeight_);
-    levels.push_back(height_);
+    const std::vector<double> levels = layerLevels();
     const int nCol = static_cast<int>(x_.size());
     // Vertex (level, column, side): side 0 at z = 0, 1 at z = depth.
     auto v = [&](int l, int k, int side) { return std::to_string(2*(l*nCol + k) + side); };
@@ -229,7 +254,7 @@ std::string MeshLayout::polylineBlockMeshDict(const std::string& rearType) const
         {
             os << "    hex (" << v(l, k, 0) << " " << v(l, k + 1, 0) << " " << v(l + 1, k + 1, 0) << " "
                << v(l + 1, k, 0) << " " << v(l, k, 1) << " " << v(l, k + 1, 1) << " " << v(l + 1, k + 1, 1) << " "
-               << v(l + 1, k, 1) << ") (" << nSegment_[k] << " " << (graded ? nGraded_ : ny_ - nGraded_)
+               << v(l + 1, k, 1) << ") (" << nSegment_[k] << " " << layerRows(l)
                << " 1) simpleGrading (1 " << num(graded ? refinement_ : 1.0) << " 1)\n";
         }
     }
@@ -262,35 +287,6 @@ std::string MeshLayout::polylineBlockMeshDict(const std::string& rearType) const
        << "    frontAndBack\n    {\n        type empty;\n        faces (" << sides << " );\n    }\n"
        << ");\n";
     return os.str();
-}
-
-std::vector<double> MeshLayout::polylineSlideFraction(const scene::Scene& sc) const
-{
-    // blockMesh's cell order: block by block (layer, then stretch), in each x fastest.
-    std::vector<double> alpha;
-    alpha.reserve(static_cast<std::size_t>(nCells()));
-    const std::vector<double> heights = cellCentreHeights();
-    const int nLayers = nGraded_ > 0 ? 2 : 1;
-    for (int l = 0; l < nLayers; ++l)
-    {
-        const int j0 = l == 0 ? 0 : nGraded_, j1 = (nGraded_ > 0 && l == 0) ? nGraded_ : ny_;
-        for (std::size_t k = 0; k < nSegment_.size(); ++k)
-        {
-            for (int j = j0; j < j1; ++j)
-            {
-                for (int i = 0; i < nSegment_[k]; ++i)
-                {
-                    const double f = (i + 0.5)/nSegment_[k];
-                    const double X = x_[k] + f*(x_[k + 1] - x_[k]);
-                    const double Y = yBase_[k] + f*(yBase_[k + 1] - yBase_[k]) + heights[j]*verticalScale_;
-                    double s, h;
-                    sc.base.coordinates(X, Y, s, h);
-                    alpha.push_back(h > 0.0 && h < sc.slide.thickness(s) ? 1.0 : 0.0);
-                }
-            }
-        }
-    }
-    return alpha;
 }
 
 } // namespace cfd
