@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -66,6 +66,11 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
     }
+    if (d.found("shearBandThickness"))
+    {
+        c.shearBandThickness = d.getScalarInRange("shearBandThickness", 0.0, 1e6, true, true,
+                                                  "shear band thickness of the remoulding [m]");
+    }
     c.particleSplitting = d.getBool("particleSplitting", true);
     if (d.found("maxParticleLength"))
     {
@@ -81,7 +86,15 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     return c;
 }
 
-std::string MpmControls::describe() const
+UndrainedClay MpmControls::clay(const rheology::HerschelBulkleyRemoulding& strength, const double cellSize) const
+{
+    UndrainedClay c = UndrainedClay::fromYoungs(strength, youngsModulusRatio*strength.s_uo, poissonRatio,
+                                                plasticStrainRate);
+    c.bandStrainFactor = rheology::shearBandStrainFactor(shearBandThickness, cellSize);
+    return c;
+}
+
+std::string MpmControls::describe(const double cellSize) const
 {
     std::ostringstream os;
     os << "setting " << setting << ": cell H0/" << cellsPerHeight << ", " << particlesPerCell << "x"
@@ -92,6 +105,11 @@ std::string MpmControls::describe() const
        << ", Courant " << courant << " (Eq. 6)"
        << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())
        << ", E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;
+    if (shearBandThickness > 0.0)
+    {
+        os << ", xi counts shear bands " << shearBandThickness << " m thick (band strain = "
+           << rheology::shearBandStrainFactor(shearBandThickness, cellSize) << " x cell strain)";
+    }
     if (particleSplitting) os << ", particles split when longer than " << maxParticleLength << " cell(s)";
     else os << ", no particle splitting";
     return os.str();

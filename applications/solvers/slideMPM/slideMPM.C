@@ -70,16 +70,14 @@ int main(int argc, char** argv)
                                 controls.resolutionLine, controls.resolutionKey);
         }
         const mpm::BaseFrame frame = mpm::BaseFrame::fromScene(sc);
-        const mpm::UndrainedClay clay = mpm::UndrainedClay::fromYoungs(
-            sc.rheology, controls.youngsModulusRatio*sc.rheology.s_uo, controls.poissonRatio,
-            controls.plasticStrainRate);
+        const mpm::UndrainedClay clay = controls.clay(sc.rheology, d);
         mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc);
         mpm::BackgroundGrid grid(d, frame.rearX);
         const mpm::TimeIntegrator integrator(frame, clay, mpm::basalContact(sc.interface), controls, sc.slide.density);
 
         const std::string backend = backendName();
         std::cout << sc.describe();
-        std::cout << "\nNumerics: " << controls.describe() << "\n"
+        std::cout << "\nNumerics: " << controls.describe(d) << "\n"
                   << "    " << points.count << " particles, cell " << d << " m, elastic wave speed "
                   << integrator.waveSpeed() << " m/s, dt " << integrator.stableTimeStep(d, 0.0) << " s\n"
                   << "Backend: " << backend << "\n" << std::endl;

@@ -320,3 +320,18 @@ TEST(PlasticShearRate, OnlyYieldedMaterialAccumulatesStrain)
     EXPECT_EQ(plasticShearRate(m, 0.029, 0.0, reg), 0.0);
     EXPECT_DOUBLE_EQ(plasticShearRate(m, 0.031, 0.0, reg), 0.031);
 }
+
+TEST(ShearBandStrainFactor, CellsCoarserThanTheBandCarryItsStrain)
+{
+    // Slip delta across a band of thickness t: strain delta/t. A cell of size h
+    // holding the band shows delta/h; times the factor it is delta/t again.
+    const double delta = 0.3, t = 0.05;
+    for (const double h : {0.05, 0.1, 0.5, 2.0})
+    {
+        EXPECT_NEAR(delta/h*shearBandStrainFactor(t, h), delta/t, 1e-12*delta/t);
+    }
+    // Cells finer than the band resolve it; no thickness set means no scaling.
+    EXPECT_EQ(shearBandStrainFactor(t, 0.01), 1.0);
+    EXPECT_EQ(shearBandStrainFactor(0.0, 0.5), 1.0);
+    EXPECT_EQ(shearBandStrainFactor(-1.0, 0.5), 1.0);
+}

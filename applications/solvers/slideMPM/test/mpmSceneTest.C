@@ -22,6 +22,13 @@ namespace
 
 using scene::blockScene;
 
+// The controls with Young's modulus E instead of their ratio to s_uo.
+mpm::MpmControls withYoungsModulus(mpm::MpmControls c, const double E, const double s_uo)
+{
+    c.youngsModulusRatio = E/s_uo;
+    return c;
+}
+
 struct SceneRun
 {
     scene::Scene sc;
@@ -37,7 +44,7 @@ struct SceneRun
     SceneRun(const scene::Scene& s, const mpm::MpmControls& c, double E, bool geostatic = true)
     :
         sc(s), controls(c), frame(mpm::BaseFrame::fromScene(s)),
-        clay(mpm::UndrainedClay::fromYoungs(s.rheology, E, c.poissonRatio, c.plasticStrainRate)),
+        clay(withYoungsModulus(c, E, s.rheology.s_uo).clay(s.rheology, s.slide.height/c.cellsPerHeight)),
         points(mpm::MaterialPoints::seed(s, frame, clay, c.poissonRatio, s.slide.height/c.cellsPerHeight,
                                          c.particlesPerCell, geostatic)),
         grid(s.slide.height/c.cellsPerHeight, frame.rearX),

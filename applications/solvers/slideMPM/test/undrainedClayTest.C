@@ -118,6 +118,27 @@ TEST(UndrainedClay, SofteningCurveFollowsEquation1)
     EXPECT_LT(sig[3], 0.3*m.s_uo);   // 20 shear strain: close to the remoulded 0.2 s_uo
 }
 
+TEST(UndrainedClay, ShearBandThinnerThanTheCellSoftensFaster)
+{
+    // A cell five times the band's thickness: the band's strain is five times
+    // the cell's, so the clay softens along Eq. (1) at five times the strain
+    // (the same curve as the unscaled clay sheared five times as far).
+    const rheology::HerschelBulkleyRemoulding m = material(0.0, 1.0, 0.2, 10.0);
+    UndrainedClay band = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49);
+    band.bandStrainFactor = rheology::shearBandStrainFactor(0.1, 0.5);
+    ASSERT_DOUBLE_EQ(band.bandStrainFactor, 5.0);
+    const UndrainedClay cell = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49);
+    double sigBand[4] = {0, 0, 0, 0}, xiBand = 0.0, sigCell[4] = {0, 0, 0, 0}, xiCell = 0.0;
+    shear(band, 1.0, 2.0, 1e-4, xiBand, sigBand);
+    shear(cell, 1.0, 2.0, 1e-4, xiCell, sigCell);
+    // The cell's plastic strain is the applied 2 less the elastic part, as unscaled.
+    const double tauBand = UndrainedClay::shearStress(sigBand);
+    EXPECT_NEAR(xiBand, 5.0*(2.0 - tauBand/band.shearModulus), 5e-3*xiBand);
+    EXPECT_NEAR(xiCell, 2.0 - UndrainedClay::shearStress(sigCell)/cell.shearModulus, 1e-3*xiCell);
+    EXPECT_NEAR(tauBand, m.strength(1.0, xiBand), 1e-4*m.s_uo);
+    EXPECT_LT(UndrainedClay::shearStress(sigBand), 0.5*UndrainedClay::shearStress(sigCell));
+}
+
 TEST(UndrainedClay, RigidRotationLeavesTheStressInvariants)
 {
     // Jaumann rate: a spinning particle keeps its principal stresses.
