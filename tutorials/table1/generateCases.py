@@ -68,6 +68,15 @@ particlesPerCell 2;
 writeFields      yes;
 """
 
+# Cases with remoulding: xi counts bands of the paper's cell, H0/60 (validation/mpm/shearBand.md).
+MPMBAND = """// Eq. (1)'s remoulding acts in shear bands, as thin as the cells that carry them:
+// the paper's MPM had cells of H0/60 = 0.083 m and its xi95 counts their strain.
+// Here xi counts the strain of a band that thin in each 0.5 m cell (band strain
+// = 6 x cell strain), so the runout does not depend on the cell
+// (validation/mpm/shearBand.md); without it, finer cells remould sooner.
+shearBandThickness 0.0833333;
+"""
+
 ALLCLEAN = """#!/bin/bash
 cd "${{0%/*}}" || exit 1
 [ -n "${{SLIDEFOAM_DIR:-}}" ] || . ../../../etc/bashrc
@@ -205,7 +214,7 @@ runTimeModifiable no;
     with open(os.path.join(d, "system", "damDict"), "w") as f:
         f.write(header.format(case=case, obj="damDict") + DAMDICT)
     with open(os.path.join(d, "system", "mpmDict"), "w") as f:
-        f.write(header.format(case=case, obj="mpmDict") + MPMDICT)
+        f.write(header.format(case=case, obj="mpmDict") + MPMDICT + (MPMBAND if drem < 1 else ""))
     with open(os.path.join(d, "system", "cfdDict"), "w") as f:
         f.write(header.format(case=case, obj="cfdDict") + CFDDICT)
     with open(os.path.join(d, "README.md"), "w") as f:

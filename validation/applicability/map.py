@@ -34,9 +34,11 @@ def run(s_uo, st, cells, end, work):
                   scene={"s_uo": "%g" % s_uo, "deltaRem": "%g" % (1.0/st)},
                   # Both methods are compared at the same time: at rest, or the front at endTime.
                   control={"endTime": "%g" % end, "writeInterval": 5},
-                  dicts={"system/damDict": "setting fast;\ncolumns 800;\nwriteFields no;\n",
-                         "system/mpmDict": "setting fast;\ncellsPerHeight %d;\nparticlesPerCell 2;\n"
-                                           "writeFields no;\nprogressInterval 60;\n" % cells})
+                  # The tutorial's method dictionaries (Case 13's mpmDict counts xi per H0/60 shear band) at
+                  # this resolution.
+                  dam={"setting": "fast", "columns": 800, "writeFields": "no"},
+                  mpm={"setting": "fast", "cellsPerHeight": cells, "particlesPerCell": 2, "writeFields": "no",
+                       "progressInterval": 60})
     out = {}
     for app in ("slideDAM", "slideMPM"):
         s = run_method(app, d)[0]

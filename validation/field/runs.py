@@ -4,7 +4,9 @@ with their Allrun (slideDAM, slideMPM, slideFoam on the polyline base, then
 compareMethods) and stores what compareMethods wrote in runs.json here, for
 validation/report.py. ~20 min on 2 cores (slideFoam on Finneidfjord 9 min).
 
-Usage: validation/field/runs.py [--stored]   (--stored: collect without running)
+Usage: validation/field/runs.py [--stored] [--only finneidfjord|mediterraneanEscarpment]
+  --stored: collect the tutorials' last results without running
+  --only:   run that tutorial alone; the other's entry in runs.json is kept
 """
 import json
 import os
@@ -17,8 +19,15 @@ CASES = {"Finneidfjord": "finneidfjord", "Mediterranean escarpment": "mediterran
 
 
 def main():
-    runs = {}
+    args = sys.argv[1:]
+    only = args[args.index("--only") + 1] if "--only" in args else None
+    if only is not None and only not in CASES.values():
+        raise SystemExit("--only: one of %s" % ", ".join(CASES.values()))
+    path = os.path.join(HERE, "runs.json")
+    runs = json.load(open(path)) if only and os.path.isfile(path) else {}
     for name, case in CASES.items():
+        if only is not None and case != only:
+            continue
         d = os.path.join(TOP, "tutorials", case)
         if "--stored" not in sys.argv[1:]:
             subprocess.run(["./Allclean"], cwd=d, check=True)
@@ -26,7 +35,7 @@ def main():
             subprocess.run(["./Allrun"], cwd=d, check=True)
         rec = json.load(open(os.path.join(d, "postProcessing", "comparison", "comparison.json")))
         runs[name] = dict(rec["methods"], paper=rec["paper"])
-    with open(os.path.join(HERE, "runs.json"), "w") as f:
+    with open(path, "w") as f:
         json.dump(runs, f, indent=1)
     for name, r in runs.items():
         print(name, {m: v.get("runout", v.get("failed")) for m, v in r.items() if m != "paper"})

@@ -14,14 +14,24 @@ from runner import TOP, slidefoam_env, which
 GENERATED = ["0", "0.orig", "constant/polyMesh", "postProcessing", "processor*"]
 
 
-def set_entry(path, key, value):
-    """Sets `key value;` (top level or inside a block) in an OpenFOAM-style dictionary."""
+def set_entry(path, key, value, add=False):
+    """Sets `key value;` (top level or inside a block) in an OpenFOAM-style dictionary; a missing key is an
+    error, or appended at the end (top level) with add=True."""
     text = open(path).read()
     new, n = re.subn(r"^(\s*%s\s+)[^;]*;" % re.escape(key), lambda m: m.group(1) + str(value) + ";", text,
                      count=1, flags=re.M)
     if n == 0:
-        raise KeyError("%s: no entry %s" % (path, key))
+        if not add:
+            raise KeyError("%s: no entry %s" % (path, key))
+        new = text + ("" if text.endswith("\n") else "\n") + "%s %s;\n" % (key, value)
     open(path, "w").write(new)
+
+
+def set_method_entries(case, method_dict, entries):
+    """Sets or adds top-level entries of a method dictionary (system/damDict, mpmDict): what the tutorial's
+    dictionary says beyond them (a scene's shearBandThickness, ...) is kept."""
+    for k, v in entries.items():
+        set_entry(os.path.join(case, "system", method_dict), k, v, add=True)
 
 
 def copy_scene(template, dest):
@@ -31,9 +41,10 @@ def copy_scene(template, dest):
     subprocess.run(["bash", "-c", ". '%s/bin/tools/RunFunctions' && cleanCase" % TOP], cwd=dest, check=True)
 
 
-def make_case(template, work, name, scene=None, control=None, cfd=None, dicts=None):
+def make_case(template, work, name, scene=None, control=None, cfd=None, dicts=None, dam=None, mpm=None):
     """A copy of a scene case with scene/control entries replaced, system/cfdDict written from the `cfd` entries,
-    and whole files written from `dicts` ({path in the case: text}, e.g. {"system/mpmDict": "..."})."""
+    whole files written from `dicts` ({path in the case: text}, e.g. {"system/mpmDict": "..."}), and entries
+    set or added in the case's own damDict and mpmDict from `dam` and `mpm`."""
     d = os.path.join(work, name)
     if os.path.exists(d):
         shutil.rmtree(d)
@@ -49,6 +60,10 @@ def make_case(template, work, name, scene=None, control=None, cfd=None, dicts=No
     for rel, text in (dicts or {}).items():
         with open(os.path.join(d, rel), "w") as f:
             f.write(text)
+    if dam:
+        set_method_entries(d, "damDict", dam)
+    if mpm:
+        set_method_entries(d, "mpmDict", mpm)
     return d
 
 

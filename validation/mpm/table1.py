@@ -21,15 +21,16 @@ sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from slidefoam_io import read_summary, read_runout  # noqa: E402
 from runner import slidefoam_env, which  # noqa: E402
 from paper import paper_table  # noqa: E402
+from cfdcase import set_method_entries  # noqa: E402
 
 
 def run_case(c, cells, ppc, work):
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     d = os.path.join(work, "case%02d_h%d_p%d" % (c, cells, ppc))
     shutil.copytree(src, d, ignore=shutil.ignore_patterns("postProcessing", "log.*"))
-    with open(os.path.join(d, "system", "mpmDict"), "w") as f:
-        f.write("setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\nwriteFields no;\nprogressInterval 30;\n"
-                % (cells, ppc))
+    # The tutorial's mpmDict with the resolution of this run (its other entries, e.g. a shearBandThickness, kept).
+    set_method_entries(d, "mpmDict", {"setting": "fast", "cellsPerHeight": cells, "particlesPerCell": ppc,
+                                      "writeFields": "no", "progressInterval": 30})
     p = subprocess.run([which("slideMPM"), "-case", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        env=slidefoam_env())
     log = p.stdout.decode(errors="replace")

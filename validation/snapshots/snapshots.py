@@ -40,9 +40,9 @@ def base_angle(case_dir):
 def run(case, end, work):
     d = make_case(os.path.join(TOP, "tutorials", "table1", "case%02d" % case), work, "case%02d" % case,
                   control={"endTime": "%g" % end, "stopAtRest": "no", "writeInterval": 1},
-                  dicts={"system/damDict": "setting fast;\ncolumns 800;\nwriteFields yes;\n",
-                         "system/mpmDict": "setting fast;\ncellsPerHeight 10;\nparticlesPerCell 2;\n"
-                                           "writeFields yes;\nprogressInterval 30;\n"})
+                  dam={"setting": "fast", "columns": 800, "writeFields": "yes"},
+                  mpm={"setting": "fast", "cellsPerHeight": 10, "particlesPerCell": 2, "writeFields": "yes",
+                       "progressInterval": 30})
     for app in ("slideDAM", "slideMPM"):
         run_method(app, d)
     return d
