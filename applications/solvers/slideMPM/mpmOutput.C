@@ -152,7 +152,7 @@ double median(std::vector<double> v)
 } // namespace
 
 Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const double H0, const double g,
-                          const double cellSize)
+                          const double cellSize, const rheology::HerschelBulkleyRemoulding& material)
 {
     Mechanism m;
     if (hp.count == 0)
@@ -226,16 +226,52 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
             xiBody.push_back(hp.xi(p));
         }
     }
+    // Horsts: in a remoulding material, blocks whose body (above the basal layer)
+    // has kept nine tenths of its strength, at least H0/5 high and two columns
+    // long, each parted from the next by columns whose body has lost half of it
+    // (the shear bands and grabens between the paper's horsts), or none left.
+    if (material.deltaRem < 1.0)
+    {
+        std::vector<std::vector<double>> bodyXi(nCol);
+        for (int p = 0; p < hp.count; ++p)
+        {
+            const int col = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
+            const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
+            if (h - bottom[col] >= 2.0*hp.spacing) bodyXi[col].push_back(hp.xi(p));
+        }
+        const double loss = 1.0 - material.deltaRem;
+        int run = 0;              // intact columns in the current block
+        bool parted = true;       // remoulded columns since the last block
+        for (int col = 0; col <= nCol; ++col)
+        {
+            const bool occupied = col < nCol && top[col] >= 0.0;
+            const double kept = occupied && !bodyXi[col].empty()
+                ? (material.remouldingFactor(median(bodyXi[col])) - material.deltaRem)/loss : 0.0;
+            if (occupied && kept >= 0.9 && top[col] >= 0.2*H0)
+            {
+                ++run;
+                continue;
+            }
+            if (run >= 2 && parted)
+            {
+                ++m.horsts;
+                parted = false;
+            }
+            run = 0;
+            if (occupied && kept <= 0.5) parted = true;
+        }
+        if (m.horsts < 2) m.horsts = 0;
+    }
     const double V = P/M;
     m.basalSlipRatio = (Mb > 0.0 && V != 0.0) ? (Pb/Mb)/V : 0.0;
     const double xb = median(xiBase), xr = median(xiBody);
     m.basalStrainRatio = xr > 0.0 ? xb/xr : (xb > 0.0 ? 1e9 : 1.0);
     m.shearBand = (xb > 0.5 && m.basalStrainRatio > 3.0) ? "along the base"
-                : (m.grabens > 0 ? "in the body" : "none");
+                : (m.grabens > 0 || m.horsts > 0 ? "in the body" : "none");
 
     const std::vector<std::string>& names = output::mechanismNames();
     if (m.bodies > 1) m.name = names[3];
-    else if (m.grabens >= 2) m.name = names[2];
+    else if (m.grabens >= 2 || m.horsts >= 2) m.name = names[2];
     else if (std::fabs(V) > 0.1*std::sqrt(g*H0) && m.basalSlipRatio > 0.8) m.name = names[1];
     else m.name = names[0];
     return m;

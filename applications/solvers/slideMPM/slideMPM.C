@@ -226,7 +226,7 @@ int main(int argc, char** argv)
             {
                 // The schedule and the mechanism first, so that the state written holds them.
                 schedule.next();
-                mechanisms.emplace_back(t, mpm::detectMechanism(mpm::HostPoints(points), frame, H0, sc.g, d).name);
+                mechanisms.emplace_back(t, mpm::detectMechanism(mpm::HostPoints(points), frame, H0, sc.g, d, sc.rheology).name);
                 write(t);
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << last.front << " m  U_front = " << last.frontVelocity
@@ -245,7 +245,7 @@ int main(int argc, char** argv)
         if (!atRest) atRest = stats.maxSpeed < rc.restVelocity && slowingDown;
 
         const mpm::HostPoints hp(points);
-        const mpm::Mechanism mech = mpm::detectMechanism(hp, frame, H0, sc.g, d);
+        const mpm::Mechanism mech = mpm::detectMechanism(hp, frame, H0, sc.g, d, sc.rheology);
         const double mass = hp.totalMass();
         output::Summary summary;
         summary.method = "slideMPM";
@@ -271,6 +271,7 @@ int main(int argc, char** argv)
         summary.addString("shear_band", mech.shearBand);
         summary.addNumber("bodies", mech.bodies);
         summary.addNumber("grabens", mech.grabens);
+        summary.addNumber("horsts", mech.horsts);
         summary.addNumber("basal_slip_ratio", mech.basalSlipRatio);
         summary.extra.emplace_back("mechanism_history", output::mechanismHistoryJson(mechanisms));
         summary.write(caseDir);

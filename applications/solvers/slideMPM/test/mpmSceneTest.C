@@ -418,6 +418,47 @@ TEST(SlideMPM, SplittingKeepsMassMomentumAndTheAffineField)
     EXPECT_EQ(r.points.count, 2*n);
 }
 
+TEST(SlideMPM, HorstsAreIntactBlocksPartedByRemouldedMaterial)
+{
+    // Case 11's slide at H0/5, its particles given xi by hand: remoulded through
+    // the body in two 3 m bands, intact elsewhere, is three horsts (spreading);
+    // remoulded in the basal layer only, one intact body; no remoulding in the
+    // material, no horsts whatever xi says.
+    scene::Interface iface;
+    scene::Scene sc = blockScene(3.43, 40.0, 5.0, 600.0, 5000.0, iface);
+    sc.rheology.deltaRem = 0.025;
+    sc.rheology.xi95 = 10.0;
+    SceneRun r(sc, controls(5, 2), 100.0*sc.rheology.s_uo);
+    const double H0 = sc.slide.height, d = H0/5.0;
+    auto withXi = [&](bool throughBody)
+    {
+        const mpm::HostPoints hp(r.points);
+        const double rear = hp.rearX();
+        auto xi = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.plasticShearStrain);
+        for (int p = 0; p < hp.count; ++p)
+        {
+            const double s = hp.position(p, 0) - rear;
+            const bool band = (s >= 12.0 && s < 15.0) || (s >= 26.0 && s < 29.0);
+            const bool basal = hp.position(p, 1) < 2.0*hp.spacing;
+            xi(p) = band && (throughBody || basal) ? 100.0 : 0.0;
+        }
+        Kokkos::deep_copy(r.points.plasticShearStrain, xi);
+        return mpm::detectMechanism(mpm::HostPoints(r.points), r.frame, H0, sc.g, d, sc.rheology);
+    };
+    const mpm::Mechanism parted = withXi(true);
+    EXPECT_EQ(parted.horsts, 3);
+    EXPECT_EQ(parted.grabens, 0);   // the surface is flat: only xi tells
+    EXPECT_EQ(parted.name, "spreading (horsts and grabens)");
+    EXPECT_EQ(parted.shearBand, "in the body");
+    const mpm::Mechanism basal = withXi(false);
+    EXPECT_EQ(basal.horsts, 0);
+    EXPECT_EQ(basal.name, "viscous elongation");
+    scene::Scene intact = sc;
+    intact.rheology.deltaRem = 1.0;
+    withXi(true);
+    EXPECT_EQ(mpm::detectMechanism(mpm::HostPoints(r.points), r.frame, H0, sc.g, d, intact.rheology).horsts, 0);
+}
+
 int main(int argc, char** argv)
 {
     ::testing::InitGoogleTest(&argc, argv);
