@@ -19,6 +19,14 @@ def read_summary(path):
         return json.load(f)
 
 
+def mechanism_at(summary, t):
+    """The mechanism a summary's mechanism_history gives at time t (the last write at or before t), or None."""
+    for row in reversed(summary.get("mechanism_history", [])):
+        if row[0] <= t + 1e-9:
+            return row[1]
+    return None
+
+
 def read_vtp(path):
     """Points (n x 3) and point arrays {name: array} of a SlideFoam .vtp file."""
     with open(path, "rb") as f:

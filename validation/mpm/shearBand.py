@@ -19,6 +19,7 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case  # noqa: E402
 from runner import run_method  # noqa: E402
+from slidefoam_io import mechanism_at  # noqa: E402
 
 # (name, tutorial, H0 [m], end time [s] or None for the tutorial's)
 SCENES = [("Case 11", "table1/case11", 5.0, 30.0),
@@ -45,16 +46,10 @@ def run(name, tut, H0, end, cells, band, work):
     d = make_case(os.path.join(top, "tutorials", tut), work, label,
                   control={"endTime": "%g" % end} if end else None, mpm=mpm)
     s, r = run_method("slideMPM", d)
-    hist = s.get("mechanism_history", [])
-
-    def mech_at(t):
-        for row in reversed(hist):
-            if row[0] <= t + 1e-9:
-                return row[1]
-        return None
     return {"scene": name, "cells": cells, "band": band, "runout": s["runout_m"], "endTime": s["end_time_s"],
             "atRest": s["at_rest"], "wall": s["wall_time_s"], "mechanism": s["mechanism"],
-            "shearBand": s.get("shear_band"), "mech10": mech_at(10.0), "mech30": mech_at(30.0),
+            "shearBand": s.get("shear_band"), "horsts": s.get("horsts"), "mech10": mechanism_at(s, 10.0),
+            "mech30": mechanism_at(s, 30.0),
             "history": [[float(a), float(b)] for a, b in zip(r["time"], r["front"])]}
 
 

@@ -18,7 +18,7 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from slidefoam_io import read_summary, read_runout  # noqa: E402
+from slidefoam_io import mechanism_at, read_summary, read_runout  # noqa: E402
 from runner import slidefoam_env, which  # noqa: E402
 from paper import paper_table  # noqa: E402
 from cfdcase import set_method_entries  # noqa: E402
@@ -38,16 +38,10 @@ def run_case(c, cells, ppc, work):
         return {"case": c, "cells": cells, "ppc": ppc, "failed": log[-800:]}
     s = read_summary(os.path.join(d, "postProcessing", "slideMPM", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideMPM", "runout.dat"))
-    hist = s.get("mechanism_history", [])
-
-    def at(t):
-        for row in reversed(hist):
-            if row[0] <= t + 1e-9:
-                return row[1]
-        return None
     return {"case": c, "cells": cells, "ppc": ppc, "runout": s["runout_m"], "endTime": s["end_time_s"],
             "atRest": s["at_rest"], "wall": s["wall_time_s"], "particles": s["problem_size"],
-            "mechanism": s["mechanism"], "shearBand": s.get("shear_band"), "mech10": at(10.0), "mech30": at(30.0),
+            "mechanism": s["mechanism"], "shearBand": s.get("shear_band"), "mech10": mechanism_at(s, 10.0),
+            "mech30": mechanism_at(s, 30.0),
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
             "maxVelocity": float(r["maxVelocity"][-1]),
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}
