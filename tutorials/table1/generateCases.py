@@ -72,8 +72,8 @@ writeFields      yes;
 MPMBAND = """// Eq. (1)'s remoulding acts in shear bands, as thin as the cells that carry them:
 // the paper's MPM had cells of H0/60 = 0.083 m and its xi95 counts their strain.
 // Here xi counts the strain of a band that thin in each 0.5 m cell (band strain
-// = 6 x cell strain), so the runout does not depend on the cell
-// (validation/mpm/shearBand.md); without it, finer cells remould sooner.
+// = 6 x cell strain), so a band remoulds at the same slip whatever the cell;
+// without it, finer cells remould sooner (validation/mpm/shearBand.md).
 shearBandThickness 0.0833333;
 """
 

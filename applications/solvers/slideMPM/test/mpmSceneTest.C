@@ -466,13 +466,14 @@ int main(int argc, char** argv)
     return RUN_ALL_TESTS();
 }
 
-TEST(SlideMPM, ShearBandThicknessMakesSofteningMeshObjective)
+TEST(SlideMPM, ShearBandThicknessRemouldsTwoMeshesAlike)
 {
     // Table 1 Case 11: a strong (5 kPa), very sensitive (S_t = 40, xi95 = 10)
     // slide whose 5 m faces collapse (4 s_uo/(rho g) = 3.4 m) and remould.
     // Counted per cell, the collapse zone's strain grows as the cells shrink
     // and so does the runout; counted as a band 1/60 of the slide thick
-    // (the paper's cell), two meshes agree.
+    // (the paper's cell), H0/10 and H0/20 agree. (H0/40, where more bands fit
+    // in the slide, parts from both: 12.0 m at 3 s; validation/mpm/shearBand.md.)
     scene::Interface iface;
     scene::Scene sc = blockScene(3.43, 40.0, 5.0, 600.0, 5000.0, iface);
     sc.rheology.deltaRem = 0.025;
