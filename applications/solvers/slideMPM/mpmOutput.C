@@ -208,10 +208,12 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
     // Basal layer: the particles within two spacings of the lowest particle in their column.
     double M = 0.0, P = 0.0, Mb = 0.0, Pb = 0.0;
     std::vector<double> xiBase, xiBody;
+    std::vector<std::vector<double>> bodyXi(nCol);   // per column, above its lowest two spacings (horsts below)
     for (int p = 0; p < hp.count; ++p)
     {
         const int col = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
         const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
+        if (h - bottom[col] >= 2.0*hp.spacing) bodyXi[col].push_back(hp.xi(p));
         const double u = hp.velocity(p, 0);
         M += hp.mass(p);
         P += hp.mass(p)*u;
@@ -232,13 +234,6 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
     // (the shear bands and grabens between the paper's horsts), or none left.
     if (material.deltaRem < 1.0)
     {
-        std::vector<std::vector<double>> bodyXi(nCol);
-        for (int p = 0; p < hp.count; ++p)
-        {
-            const int col = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
-            const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
-            if (h - bottom[col] >= 2.0*hp.spacing) bodyXi[col].push_back(hp.xi(p));
-        }
         const double loss = 1.0 - material.deltaRem;
         int run = 0;              // intact columns in the current block
         bool parted = true;       // remoulded columns since the last block
