@@ -335,3 +335,36 @@ TEST(ShearBandStrainFactor, CellsCoarserThanTheBandCarryItsStrain)
     EXPECT_EQ(shearBandStrainFactor(0.0, 0.5), 1.0);
     EXPECT_EQ(shearBandStrainFactor(-1.0, 0.5), 1.0);
 }
+
+TEST(ReturnStrength, MeetsEq1AtThePlasticRate)
+{
+    // tau - G x = s_u(x/dt, xi) for every branch: shear thinning (Case 10's
+    // n 0.23, n 0.5), Bingham (n 1, the closed form), shear thickening (n 1.5),
+    // rate independent (eta 0); intact and partly remoulded; from a trial stress
+    // a millionth above the threshold (where u^n is steepest) to four times it.
+    const double G = 100.0*500.0/2.98;
+    for (const double dt : {1e-5, 1e-3})
+    for (const double n : {0.23, 0.5, 1.0, 1.5})
+    for (const double eta : {0.0, 0.45})
+    for (const double xi : {0.0, 4.0})
+    {
+        HerschelBulkleyRemoulding m = case10();
+        m.n = n;
+        m.eta = eta;
+        const double threshold = m.thresholdStrength(xi);
+        double x = -1.0;
+        EXPECT_EQ(m.returnStrength(0.9*threshold, G, dt, xi, x), threshold);
+        EXPECT_EQ(x, 0.0);
+        for (const double excess : {1e-6, 0.01, 0.5, 3.0})
+        {
+            const double tau = threshold*(1.0 + excess);
+            const double s = m.returnStrength(tau, G, dt, xi, x);
+            EXPECT_GT(x, 0.0);
+            EXPECT_GE(s, threshold);
+            EXPECT_LE(s, tau);
+            EXPECT_NEAR(s, m.strength(x/dt, xi), 1e-12*tau);
+            EXPECT_NEAR(tau - G*x, s, 1e-12*tau)
+                << "dt " << dt << " n " << n << " eta " << eta << " xi " << xi << " excess " << excess;
+        }
+    }
+}
