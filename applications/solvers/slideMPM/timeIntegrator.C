@@ -15,8 +15,8 @@ namespace
 
 using Policy = Kokkos::RangePolicy<ExecutionSpace>;
 
-// Grid-to-particle transfer (velocity, APIC affine field, velocity gradient) with the step's reductions (bounding box, speed,
-// kinetic energy, finiteness) in the same pass.
+// Grid-to-particle transfer (velocity, APIC affine field, velocity gradient) with the B-bar's cell sums of the dilatation
+// and the step's reductions (bounding box, speed, kinetic energy, finiteness) in the same pass.
 struct GridToParticle
 {
     typedef double value_type[];
@@ -25,11 +25,12 @@ struct GridToParticle
 
     ParticleVector x, v;
     ParticleTensor C, L;
-    ParticleScalar m;
+    ParticleScalar m, V;
     NodeField vel;
+    NodeScatter cellDilatation;   // B-bar: the cell sums of V tr(L) and V
     double d, xOrigin, dt;
     int i0, j0;
-    bool apic;
+    bool apic, average;
 
     KOKKOS_INLINE_FUNCTION void operator()(const int p, value_type s) const
     {
@@ -62,6 +63,15 @@ struct GridToParticle
         L(p, 0) = L00*invD; L(p, 1) = L01*invD; L(p, 2) = L10*invD; L(p, 3) = L11*invD;
         v(p, 0) = vx;
         v(p, 1) = vy;
+        if (average)
+        {
+            // Against volumetric locking (nu -> 0.5): the stress update takes the
+            // volume-weighted mean dilatation of the particle's cell (B-bar), so the
+            // incompressibility constraint is counted per cell, not per particle.
+            auto acc = cellDilatation.access();
+            acc(st.cellX(), st.cellY(), 0) += V(p)*(L00*invD + L11*invD);
+            acc(st.cellX(), st.cellY(), 1) += V(p);
+        }
         // Statistics of where the particles are going; they move in the stress pass,
         // after the nodal averaging has used the weights at the old positions.
         const double nx = x(p, 0) + dt*vx, ny = x(p, 1) + dt*vy;
@@ -299,7 +309,7 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
     });
 }
 
-StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, const BackgroundGrid& grid, const double dt) const
+StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
 {
     GridToParticle f;
     f.x = mp.position;
@@ -307,6 +317,7 @@ StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, const Backgrou
     f.C = mp.affine;
     f.L = mp.velocityGradient;
     f.m = mp.mass;
+    f.V = mp.volume;
     f.vel = grid.velocity;
     f.d = grid.d;
     f.xOrigin = grid.xOrigin;
@@ -314,52 +325,25 @@ StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, const Backgrou
     f.i0 = grid.i0;
     f.j0 = grid.j0;
     f.apic = controls_.transfer == MpmControls::Transfer::apic;
+    f.average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
+    if (f.average)
+    {
+        Kokkos::deep_copy(grid.averaging, 0.0);
+        grid.averagingScatter.reset_except(grid.averaging);
+        f.cellDilatation = grid.averagingScatter;
+    }
     Kokkos::View<double*, Kokkos::HostSpace> r("stepStatistics", GridToParticle::nStats);
     Kokkos::parallel_reduce("gridToParticle", Policy(0, mp.count), f, r);
+    if (f.average) Kokkos::Experimental::contribute(grid.averaging, grid.averagingScatter);
     return toStatistics(r.data());
 }
 
-void TimeIntegrator::averageDilatation(MaterialPoints& mp, BackgroundGrid& grid) const
-{
-    // Against volumetric locking (nu -> 0.5): the volumetric strain rate of a
-    // particle is replaced by the volume-weighted mean over the particles of its
-    // cell, so the incompressibility constraint is counted per cell rather than
-    // per particle (B-bar; the force side uses the cell's mean pressure).
-    const auto x = mp.position;
-    const auto L = mp.velocityGradient;
-    const auto V = mp.volume;
-    const auto dil = mp.dilatation;
-    const double d = grid.d, xOrigin = grid.xOrigin;
-    const int i0 = grid.i0, j0 = grid.j0;
-    if (controls_.volumetricLocking == MpmControls::VolumetricLocking::none)
-    {
-        Kokkos::parallel_for("dilatation", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
-        {
-            dil(p) = L(p, 0) + L(p, 3);
-        });
-        return;
-    }
-    const auto avg = grid.averaging;
-    sumOverCells(grid, x, mp.count, KOKKOS_LAMBDA(const int p, double& a, double& b)
-    {
-        a = V(p)*(L(p, 0) + L(p, 3));
-        b = V(p);
-    });
-    Kokkos::parallel_for("dilatationFromCell", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
-    {
-        int i, j;
-        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
-        dil(p) = avg(i, j, 0)/avg(i, j, 1);
-    });
-}
-
-void TimeIntegrator::updateStress(MaterialPoints& mp, const double cellSize, const double dt) const
+void TimeIntegrator::updateStress(MaterialPoints& mp, const BackgroundGrid& grid, const double dt) const
 {
     const UndrainedClay clay = clay_;
     const auto L = mp.velocityGradient;
     const auto sig = mp.stress;
     const auto V = mp.volume;
-    const auto dil = mp.dilatation;
     const auto xi = mp.plasticShearStrain;
     const auto su = mp.strength;
     const auto rate = mp.shearStrainRate;
@@ -367,22 +351,33 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, const double cellSize, con
     const auto x = mp.position;
     const auto v = mp.velocity;
     const auto len = mp.size;
+    const bool average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
+    const auto avg = grid.averaging;
+    const double d = grid.d, xOrigin = grid.xOrigin;
+    const int i0 = grid.i0, j0 = grid.j0;
     // Beyond twice the splitting length a domain's stretch no longer says where
     // the gaps are (a flow that folds its material fills them): capped there.
-    const double maxLength = 2.0*splitting_.maxLength*cellSize;
+    const double maxLength = 2.0*splitting_.maxLength*d;
     const BaseLevelSet level = frame_.level;
     Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         const double Lp[4] = {L(p, 0), L(p, 1), L(p, 2), L(p, 3)};
         double s[4] = {sig(p, 0), sig(p, 1), sig(p, 2), sig(p, 3)};
+        double dil = Lp[0] + Lp[3];
+        if (average)
+        {
+            int i, j;
+            Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);   // where G2P summed it
+            dil = avg(i, j, 0)/avg(i, j, 1);
+        }
         double xip = xi(p), sup, gdot;
-        const double dXi = clay.update(Lp, dil(p), dt, s, xip, sup, gdot);
+        const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         xi(p) = xip;
         su(p) = sup;
         rate(p) = gdot;
         plasticRate(p) = dXi/dt;
-        V(p) *= 1.0 + dil(p)*dt;
+        V(p) *= 1.0 + dil*dt;
         len(p, 0) = std::min(maxLength, len(p, 0)*std::exp(Lp[0]*dt));
         len(p, 1) = std::min(maxLength, len(p, 1)*std::exp(Lp[3]*dt));
         const double xn = x(p, 0) + dt*v(p, 0);
@@ -413,8 +408,7 @@ StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, co
     particleToGrid(mp, grid, dt);
     updateGrid(grid, dt);
     const StepStatistics s = gridToParticle(mp, grid, dt);
-    averageDilatation(mp, grid);
-    updateStress(mp, grid.d, dt);
+    updateStress(mp, grid, dt);
     return s;
 }
 
