@@ -14,6 +14,12 @@ runs whose expected values come from physics, not from tuning.
     counted per H0/60 shear band), 10 s: the front's travel lies within 3 % of
     the one table1.json (the report) holds for 10 s.
 
+  - A Bingham layer (binghamLayer.py) on a no-slip slope, cell H/10: the surface
+    velocity (mean over 7-10 s) within 6 % of the analytical plug velocity, the
+    RMS difference from the steady Bingham profile below 8 % of it, and the
+    shear stress of the top row of particles below a quarter of the basal one
+    (the free surface carries no traction).
+
 Usage: ciCheck.py <slideMPM> <work dir>"""
 import json
 import math
@@ -86,9 +92,20 @@ def main():
           % (s["runout_m"], ref, "ok" if ok else "FAIL"))
     if not ok:
         failures.append("case 11")
+    import binghamLayer
+    r = binghamLayer.compare(binghamLayer.run(work, 10, app))
+    plug = binghamLayer.PLUG_VELOCITY
+    basal = binghamLayer.RHO*binghamLayer.G*binghamLayer.S*binghamLayer.H
+    ok = (abs(r["surfaceLate"]/plug - 1.0) <= 0.06 and r["rms"] <= 0.08*plug and abs(r["tauTop"]) <= 0.25*basal)
+    print("bingham layer H/10: surface %.3f m/s against the plug's %.3f (%+.1f %%), RMS profile error %.3f m/s, "
+          "top-row shear stress %.1f Pa (basal %.1f Pa): %s"
+          % (r["surfaceLate"], plug, 100.0*(r["surfaceLate"]/plug - 1.0), r["rms"], r["tauTop"], basal,
+             "ok" if ok else "FAIL"))
+    if not ok:
+        failures.append("bingham layer")
     if failures:
         raise SystemExit("FAIL: " + ", ".join(failures))
-    print("3 passed, 0 failed")
+    print("4 passed, 0 failed")
 
 
 if __name__ == "__main__":
