@@ -58,3 +58,16 @@ def read_pvd(path):
     with open(path) as f:
         text = f.read()
     return [(float(t), os.path.join(base, p)) for t, p in re.findall(r'timestep="([^"]+)".*?file="([^"]+)"', text)]
+
+
+def particles_on_planar_base(case, t, theta_deg):
+    """slideMPM's particles of the frame written nearest to time t, in the frame of a planar base of angle
+    theta_deg: (distance along the base downslope, height above the base line through the origin, velocity along
+    the base, the particle arrays)."""
+    import math
+    import os
+    frames = read_pvd(os.path.join(case, "postProcessing", "slideMPM", "particles.pvd"))
+    pts, arr = read_vtp(min(frames, key=lambda f: abs(f[0] - t))[1])
+    c, s = math.cos(math.radians(theta_deg)), math.sin(math.radians(theta_deg))
+    return (pts[:, 0]*c - pts[:, 2]*s, pts[:, 0]*s + pts[:, 2]*c,
+            arr["velocity"][:, 0]*c - arr["velocity"][:, 2]*s, arr)

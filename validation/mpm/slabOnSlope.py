@@ -24,7 +24,7 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case  # noqa: E402
 from runner import run_method  # noqa: E402
-from slidefoam_io import read_pvd, read_vtp  # noqa: E402
+from slidefoam_io import particles_on_planar_base  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -35,14 +35,7 @@ H = 1.0
 
 
 def plug_velocity(case, t):
-    pvd = os.path.join(case, "postProcessing", "slideMPM", "particles.pvd")
-    frames = read_pvd(pvd)
-    path = min(frames, key=lambda f: abs(f[0] - t))[1]
-    pts, arr = read_vtp(path)
-    th = math.radians(THETA)
-    s = pts[:, 0]*math.cos(th) - pts[:, 2]*math.sin(th)    # along the base (downslope)
-    n = pts[:, 0]*math.sin(th) + pts[:, 2]*math.cos(th)    # above it
-    u = arr["velocity"][:, 0]*math.cos(th) - arr["velocity"][:, 2]*math.sin(th)
+    s, n, u, _ = particles_on_planar_base(case, t, THETA)
     mid = 0.5*(s.min() + s.max())
     near = np.abs(s - mid) < 2.0
     plug = near & (n - n[near].min() > 0.7*(n[near].max() - n[near].min()))
