@@ -3,6 +3,7 @@
 #include "dictionary.H"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +17,35 @@ namespace slide
 {
 namespace output
 {
+
+namespace
+{
+
+// x as a C99 hexadecimal float ("-0x1.8p+1", exact, read back by strtod) and a
+// newline. std::to_chars writes what printf's %a does at a fifth of the cost
+// (the state of a 420 000-particle run is 10 million numbers per write), but
+// without the 0x.
+void appendHexFloat(std::string& out, const double x)
+{
+    char buf[40];
+    char* p = buf;
+    double a = x;
+    if (std::isfinite(x))
+    {
+        if (std::signbit(x))
+        {
+            *p++ = '-';
+            a = -x;
+        }
+        *p++ = '0';
+        *p++ = 'x';
+    }
+    p = std::to_chars(p, buf + sizeof buf - 1, a, std::chars_format::hex).ptr;
+    *p++ = '\n';
+    out.append(buf, p);
+}
+
+} // namespace
 
 void StateFile::add(const std::string& key, const std::vector<double>& values)
 {
@@ -31,16 +61,14 @@ void StateFile::write(const std::string& path) const
         std::ofstream os(tmp);
         if (!os) throw std::runtime_error("cannot write " + tmp);
         os << "// SlideFoam restart state: key, count, values as hexadecimal floats\n";
-        char buf[64];
+        std::string text;
         for (const std::string& key : order_)
         {
             const std::vector<double>& v = data_.at(key);
-            os << key << ' ' << v.size() << '\n';
-            for (double x : v)
-            {
-                std::snprintf(buf, sizeof buf, "%a\n", x);
-                os << buf;
-            }
+            text = key + ' ' + std::to_string(v.size()) + '\n';
+            text.reserve(text.size() + 26*v.size());
+            for (double x : v) appendHexFloat(text, x);
+            os.write(text.data(), static_cast<std::streamsize>(text.size()));
         }
         if (!os) throw std::runtime_error("cannot write " + tmp);
     }

@@ -11,7 +11,7 @@ namespace mpm
 unsigned long long BackgroundGrid::bytesFor(const long long nNodes)
 {
     const unsigned long long threads = static_cast<unsigned long long>(ExecutionSpace().concurrency());
-    return 8ull*static_cast<unsigned long long>(nNodes)*((nComponents + 2)*(threads + 1) + 2);
+    return 8ull*static_cast<unsigned long long>(nNodes)*((nComponents + 2 + 2)*(threads + 1) + 2);
 }
 
 bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, unsigned long long maxBytes)
@@ -41,6 +41,9 @@ bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, uns
     velocity = NodeField("nodeVelocity", ni, nj, 2);
     averaging = NodeField("averaging", ni, nj, 2);
     averagingScatter = NodeScatter(averaging);
+    pressureSums = NodeField("pressureSums", ni, nj, 2);
+    pressureSumsScatter = NodeScatter(pressureSums);
+    pressureSumsCurrent = false;
     return true;
 }
 

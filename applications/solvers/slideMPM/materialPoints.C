@@ -27,17 +27,18 @@ void MaterialPoints::resize(const int n)
     forEachView([n](const char*, auto& v) { Kokkos::resize(v, n); });
 }
 
-void MaterialPoints::sortByCell(const BackgroundGrid& grid)
+void MaterialPoints::sortByCell(BackgroundGrid& grid)
 {
+    grid.pressureSumsCurrent = false;   // summed in the old order
     using KeyView = Kokkos::View<int*, MemorySpace>;
     KeyView keys("cellKeys", count);
     const auto x = position;
-    const double d = grid.d, xOrigin = grid.xOrigin;
+    const double invD = 1.0/grid.d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0, nj = grid.nj;
     Kokkos::parallel_for("cellKeys", Kokkos::RangePolicy<ExecutionSpace>(0, count), KOKKOS_LAMBDA(const int p)
     {
         int i, j;
-        Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
+        Stencil::cell(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, i, j);
         keys(p) = i*nj + j;
     });
     const int nBins = grid.ni*grid.nj;

@@ -51,8 +51,9 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
 
     // Particles per cell.
     const auto x = mp.position;
-    const double d = grid.d, xOrigin = grid.xOrigin;
+    const double d = grid.d, invD = 1.0/d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0;
+    grid.pressureSumsCurrent = false;   // the particles change
     sumOverCells(grid, x, n, KOKKOS_LAMBDA(const int, double& a, double&) { a = 1.0; });
 
     const auto len = mp.size;
@@ -69,7 +70,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
         if ((lx > longest || ly > longest) && 0.5*vol(p) >= minVolume)
         {
             int i, j;
-            Stencil::cell(x(p, 0), x(p, 1), xOrigin, d, i0, j0, i, j);
+            Stencil::cell(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, i, j);
             if (count(i, j, 0) < fullCell) a = lx >= ly ? 0 : 1;
         }
         if (final)

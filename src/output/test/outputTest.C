@@ -2,6 +2,7 @@
 #include "application.H"
 #include "dictionary.H"
 #include "outputContract.H"
+#include "restartState.H"
 #include "vtkWriter.H"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -35,6 +37,31 @@ fs::path freshDir(const std::string& name)
 }
 
 } // namespace
+
+TEST(RestartState, HexFloatsRoundTripBitForBit)
+{
+    // Restarts must continue bit-identically: every double, signed zeros,
+    // subnormals and the extremes included, comes back exactly.
+    const fs::path d = freshDir("state");
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    const std::vector<double> values{0.0, -0.0, 1.0, -1.5, 0.1, -1.0/3.0, 6.02214076e23, -2.5e-310, tiny, -tiny,
+                                     std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
+                                     std::numeric_limits<double>::min(), std::numeric_limits<double>::infinity()};
+    StateFile f;
+    f.add("values", values);
+    f.add("time", {4.1});
+    f.write((d/"x.state").string());
+    const StateFile g = StateFile::read((d/"x.state").string());
+    const std::vector<double>& back = g.vector("values");
+    ASSERT_EQ(back.size(), values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        EXPECT_EQ(std::memcmp(&back[i], &values[i], sizeof(double)), 0) << "value " << i << ": " << values[i];
+    }
+    EXPECT_EQ(g.scalar("time"), 4.1);
+    EXPECT_NE(slurp(d/"x.state").find("\n-0x1.8p+0\n"), std::string::npos);   // C99 %a form
+    fs::remove_all(d);
+}
 
 TEST(OutputContract, RunoutLogRoundTripAndRestart)
 {
