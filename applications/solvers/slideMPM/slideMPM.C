@@ -161,6 +161,8 @@ int main(int argc, char** argv)
         // Splitting may grow the cloud up to the memory free at the start (read once, not every check).
         const long long maxParticles = output::availableMemoryBytes() > 0
             ? output::availableMemoryBytes()*8/10/mpm::MaterialPoints::bytesPerParticle : 1ll << 40;
+        // s_u and the strain rates are output only: recorded by the steps whose end is written.
+        bool restPending = false;
         while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
@@ -185,7 +187,9 @@ int main(int argc, char** argv)
                 points.sortByCell(grid);
             }
             const output::WriteSchedule::Step s = schedule.clip(t, integrator.timeStep(d, stats.maxSpeed));
-            const mpm::StepStatistics next = integrator.step(points, grid, s.dt);
+            const bool confirming = restPending;   // the step after rest was seen unrecorded
+            const bool recorded = s.landing || confirming;
+            const mpm::StepStatistics next = integrator.step(points, grid, s.dt, recorded);
             ++step;
             t = s.time;
             particleUpdates += points.count;
@@ -215,7 +219,13 @@ int main(int argc, char** argv)
             slowingDown = next.maxSpeed <= stats.maxSpeed;
             stats = next;
 
-            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity && slowingDown)
+            restPending = false;
+            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity && slowingDown && !recorded)
+            {
+                restPending = true;   // one more step, which records what the state written at rest holds
+                continue;
+            }
+            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity && (slowingDown || confirming))
             {
                 atRest = true;
                 write(t);

