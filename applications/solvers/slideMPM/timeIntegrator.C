@@ -463,17 +463,20 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         }
         x(p, 0) = xn;
         x(p, 1) = yn;
-        int i, j;
-        Stencil::cell(xn, yn, xOrigin, invD, i0, j0, i, j);
-        // A particle that left the storage (a blow-up, or a grid that must grow and
-        // so will sum afresh) has no cell to add to.
-        if (average && i >= 0 && i < ni && j >= 0 && j < nj)
+        if (average)
         {
-            double a, b;
-            cellPressureTerms(sig, V, p, a, b);
-            auto acc = pressureScatter.access();
-            acc(i, j, 0) += a;
-            acc(i, j, 1) += b;
+            int i, j;
+            Stencil::cell(xn, yn, xOrigin, invD, i0, j0, i, j);
+            // A particle that left the storage (a blow-up, or a grid that must grow
+            // and so will sum afresh) has no cell to add to.
+            if (i >= 0 && i < ni && j >= 0 && j < nj)
+            {
+                double a, b;
+                cellPressureTerms(sig, V, p, a, b);
+                auto acc = pressureScatter.access();
+                acc(i, j, 0) += a;
+                acc(i, j, 1) += b;
+            }
         }
     });
     if (average)
