@@ -219,12 +219,10 @@ int main(int argc, char** argv)
             slowingDown = next.maxSpeed <= stats.maxSpeed;
             stats = next;
 
-            restPending = false;
-            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity && slowingDown && !recorded)
-            {
-                restPending = true;   // one more step, which records what the state written at rest holds
-                continue;
-            }
+            // At rest after a step that did not record: one more step, which records
+            // what the state written at rest holds.
+            restPending = rc.stopAtRest && stats.maxSpeed < rc.restVelocity && slowingDown && !recorded;
+            if (restPending) continue;
             if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity && (slowingDown || confirming))
             {
                 atRest = true;
