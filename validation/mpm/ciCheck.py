@@ -93,7 +93,7 @@ def main():
     if not ok:
         failures.append("case 11")
     import binghamLayer
-    r = binghamLayer.compare(binghamLayer.run(work, 10, app))
+    r = binghamLayer.compare(binghamLayer.run(work, 10, "fitted", app))
     plug = binghamLayer.PLUG_VELOCITY
     basal = binghamLayer.RHO*binghamLayer.G*binghamLayer.S*binghamLayer.H
     ok = (abs(r["surfaceLate"]/plug - 1.0) <= 0.06 and r["rms"] <= 0.08*plug and abs(r["tauTop"]) <= 0.25*basal)

@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -60,7 +60,13 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     }
     if (d.found("transfer"))
     {
-        c.transfer = d.getWordOneOf("transfer", {"apic", "pic"}) == "pic" ? Transfer::pic : Transfer::apic;
+        const std::string t = d.getWordOneOf("transfer", {"apic", "quadratic", "pic"});
+        c.transfer = t == "pic" ? Transfer::pic : t == "apic" ? Transfer::apic : Transfer::quadratic;
+    }
+    if (d.found("baseBoundary"))
+    {
+        c.baseBoundary = d.getWordOneOf("baseBoundary", {"fitted", "levelSet"}) == "fitted"
+            ? BaseBoundary::fitted : BaseBoundary::levelSet;
     }
     if (d.found("strainRate"))
     {
@@ -98,8 +104,10 @@ std::string MpmControls::describe(const double cellSize) const
 {
     std::ostringstream os;
     os << "setting " << setting << ": cell H0/" << cellsPerHeight << ", " << particlesPerCell << "x"
-       << particlesPerCell << " particles per cell, quadratic B-splines, "
-       << (transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
+       << particlesPerCell << " particles per cell, quadratic B-splines"
+       << (baseBoundary == BaseBoundary::fitted ? " fitted to a planar base" : " cut by the base") << ", "
+       << (transfer == Transfer::quadratic ? "APIC + quadratic mode across the base (PolyPIC)"
+           : transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
        << ", Eq. (1) at the " << (plasticStrainRate ? "plastic" : "total") << " shear strain rate"
        << ", Courant " << courant << " (Eq. 6)"

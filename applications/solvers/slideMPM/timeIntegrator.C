@@ -15,6 +15,107 @@ namespace
 
 using Policy = Kokkos::RangePolicy<ExecutionSpace>;
 
+// Particle-to-grid transfer: mass, momentum (the particle's velocity field at
+// the node, gravity's impulse and the internal force's) and volume.
+struct ParticleToGrid
+{
+    NodeScatter scatter;
+    NodeField avg;                // B-bar: the cell's mean pressure
+    ParticleVector x, v, Q;
+    ParticleTensor C, sig;
+    ParticleScalar m, V;
+    double d, invD, xOrigin, dt, gX, gY;
+    int i0, j0;
+    bool cellPressure, fittedBase, apic;
+    bool allQuadratic;            // the quadratic transfer: every particle's mode
+
+    KOKKOS_INLINE_FUNCTION void operator()(const int p) const
+    {
+        if (allQuadratic) scatterParticle<true>(p);
+        else scatterParticle<false>(p);
+    }
+
+    template<bool AllQuadratic>
+    KOKKOS_FORCEINLINE_FUNCTION void scatterParticle(const int p) const
+    {
+        auto acc = scatter.access();
+        const Stencil st(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, fittedBase, AllQuadratic);
+        const int bx = st.bx, by = st.by;
+        const double fx = st.fx;
+        const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
+        const double mp_ = m(p), Vp = V(p);
+        double sxx = sig(p, 0), syy = sig(p, 1);
+        const double sxy = sig(p, 3);
+        if (cellPressure)
+        {
+            // B-bar: the force sees the cell's mean pressure, as the stress update
+            // sees the cell's mean dilatation, so the two stay work-conjugate.
+            const int ci = st.cellX(), cj = st.cellY();
+            const double shift = -UndrainedClay::third*(sxx + syy + sig(p, 2)) - avg(ci, cj, 0);   // the cell's mean
+            sxx += shift;
+            syy += shift;
+        }
+        const double vx = v(p, 0), vy = v(p, 1);
+        const double C00 = C(p, 0)*d, C01 = C(p, 1)*d, C10 = C(p, 2)*d, C11 = C(p, 3)*d;
+        const double Sxx = dt*Vp*sxx*invD, Syy = dt*Vp*syy*invD, Sxy = dt*Vp*sxy*invD;
+        // Node (a, b) receives, over its components (mass, momentum x and y, volume),
+        // w P + w dx PDx + w dy PDy + w q PQ + gx PGx + gy PGy (dx, dy: node -
+        // particle in cells; q: the quadratic mode; gx, gy: weight gradients per
+        // cell, 1/d is in S). The weights are products of x and y factors, so
+        // each row a is combined once and its three nodes take a few
+        // multiply-adds of 4-vectors (one SIMD register on the host).
+        const Quad P = Quad::of({mp_, mp_*(vx + dt*gX), mp_*(vy + dt*gY), Vp});   // momentum with gravity's impulse
+        const Quad PDx = Quad::of({0.0, mp_*C00, mp_*C10, 0.0});
+        const Quad PDy = Quad::of({0.0, mp_*C01, mp_*C11, 0.0});
+        const Quad PGx = Quad::of({0.0, -Sxx, -Sxy, 0.0});
+        const Quad PGy = Quad::of({0.0, -Sxy, -Syy, 0.0});
+        const bool modeHere = AllQuadratic || (apic && st.quadratic);
+        const Quad PQ = modeHere ? Quad::of({0.0, mp_*Q(p, 0), mp_*Q(p, 1), 0.0}) : Quad::broadcast(0.0);
+        if (AllQuadratic)
+        {
+            for (int a = 0; a < 3; ++a)
+            {
+                const Quad row = wx[a]*P + (wx[a]*(a - fx))*PDx + dwx[a]*PGx;
+                const Quad rowDy = wx[a]*PDy, rowGy = wx[a]*PGy, rowQ = wx[a]*PQ;
+                for (int b = 0; b < 3; ++b)
+                {
+                    addToNode(acc, bx + a, by + b,
+                              wy[b]*row + (wy[b]*st.dy[b])*rowDy + (wy[b]*st.q[b])*rowQ + dwy[b]*rowGy);
+                }
+            }
+        }
+        else
+        {
+            for (int a = 0; a < 3; ++a)
+            {
+                const Quad row = wx[a]*P + (wx[a]*(a - fx))*PDx + dwx[a]*PGx;
+                const Quad rowDy = wx[a]*PDy, rowGy = wx[a]*PGy;
+                for (int b = 0; b < 3; ++b)
+                {
+                    addToNode(acc, bx + a, by + b, wy[b]*row + (wy[b]*st.dy[b])*rowDy + dwy[b]*rowGy);
+                }
+            }
+            if (modeHere)
+            {
+                for (int a = 0; a < 3; ++a)
+                {
+                    for (int b = 0; b < 3; ++b) addToNode(acc, bx + a, by + b, (wx[a]*wy[b]*st.q[b])*PQ);
+                }
+            }
+        }
+        if (st.baseSpan)
+        {
+            // The base's nodes count the volume of the cell on the base with the
+            // particles' x weights alone (d^2 per column under a slide, wherever
+            // in the cell the particles sit): the share of the base the slide
+            // covers. Their y weights, (1 - s)^2, would undercount it by the
+            // midpoint rule's error (6 % with 2 x 2 particles).
+            const double Vb = Vp*(1.0 - wy[0]);
+            for (int a = 0; a < 3; ++a) addToNode(acc, bx + a, by, Quad::of({0.0, 0.0, 0.0, wx[a]*Vb}));
+        }
+    }
+};
+
 // Grid-to-particle transfer (velocity, APIC affine field, velocity gradient) with the B-bar's cell sums of the dilatation
 // and the step's reductions (bounding box, speed, kinetic energy, finiteness) in the same pass.
 struct GridToParticle
@@ -25,12 +126,15 @@ struct GridToParticle
 
     ParticleVector x, v;
     ParticleTensor C, L;
+    ParticleVector Q;             // the quadratic mode's coefficient
     ParticleScalar m, V;
     NodeField vel;
     NodeScatter cellDilatation;   // B-bar: the cell sums of V tr(L) and V
     double invD, xOrigin, dt;
+    double twoCells;              // [m]: below it, a particle may be in the base's cell at the next particle-to-grid
     int i0, j0, count;
-    bool apic, average;
+    bool apic, average, fittedBase;
+    bool allQuadratic;            // the quadratic transfer: every particle's mode
 
     // A work item is a run of particlesPerItem particles, whose statistics are
     // gathered in registers and merged into the thread's once.
@@ -43,7 +147,8 @@ struct GridToParticle
         for (int p = item*particlesPerItem; p < end; ++p)
         {
             double nx, ny, v2;
-            transfer(p, nx, ny, v2);
+            if (allQuadratic) transfer<true>(p, nx, ny, v2);
+            else transfer<false>(p, nx, ny, v2);
             finite = finite && std::isfinite(nx) && std::isfinite(ny) && std::isfinite(v2);
             hi[0] = nx > hi[0] ? nx : hi[0];
             hi[1] = -nx > hi[1] ? -nx : hi[1];
@@ -58,38 +163,70 @@ struct GridToParticle
     }
 
     // Particle p's transfer; nx, ny: where it is going, v2: its speed squared.
-    KOKKOS_INLINE_FUNCTION void transfer(const int p, double& nx, double& ny, double& v2) const
+    template<bool AllQuadratic>
+    KOKKOS_FORCEINLINE_FUNCTION void transfer(const int p, double& nx, double& ny, double& v2) const
     {
-        const Stencil st(x(p, 0), x(p, 1), xOrigin, invD, i0, j0);
+        const Stencil st(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, fittedBase, AllQuadratic);
         const int bx = st.bx, by = st.by;
-        const double fx = st.fx, fy = st.fy;
+        const double fx = st.fx;
         const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
         // The weights are products of x and y factors: each node row a is summed
         // over b first (value, y-derivative, y-moment; both velocity components
         // side by side), then the rows over a: 84 multiply-adds instead of 117.
         const Pair zero = Pair::broadcast(0.0);
-        Pair u = zero, Bx = zero, By = zero, Gx = zero, Gy = zero;
-        const double wyDy[3] = {wy[0]*(0.0 - fy), wy[1]*(1.0 - fy), wy[2]*(2.0 - fy)};   // node - particle, in cells
+        Pair u = zero, Bx = zero, By = zero, Gx = zero, Gy = zero, Bq = zero;
+        const double wyDy[3] = {wy[0]*st.dy[0], wy[1]*st.dy[1], wy[2]*st.dy[2]};   // node - particle, in cells
+        double wyQ[3] = {0.0, 0.0, 0.0};
+        if (AllQuadratic) for (int b = 0; b < 3; ++b) wyQ[b] = wy[b]*st.q[b];
         for (int a = 0; a < 3; ++a)
         {
-            Pair row = zero, rowDy = zero, rowMoment = zero;
+            Pair row = zero, rowDy = zero, rowMoment = zero, rowQ = zero;
             for (int b = 0; b < 3; ++b)
             {
                 const Pair un = Pair::load(&vel(bx + a, by + b, 0));
                 row += wy[b]*un;
                 rowDy += dwy[b]*un;
                 rowMoment += wyDy[b]*un;
+                if (AllQuadratic) rowQ += wyQ[b]*un;
             }
             u += wx[a]*row;
             Bx += (wx[a]*(a - fx))*row;
             By += wx[a]*rowMoment;
             Gx += dwx[a]*row;   // per cell
             Gy += wx[a]*rowDy;
+            if (AllQuadratic) Bq += wx[a]*rowQ;
         }
         const double vx = u[0], vy = u[1];
         const double L00 = Gx[0], L01 = Gy[0], L11 = Gy[1];
-        const double k = apic ? QuadraticBSpline::apicInverseFactor*invD : 0.0;   // B is in cells: 4/d^2 * d
-        C(p, 0) = k*Bx[0]; C(p, 1) = k*By[0]; C(p, 2) = k*Bx[1]; C(p, 3) = k*By[1];
+        // B is in cells: 4/d^2 * d (D_yy differs in the base's span of a fitted base).
+        const double k = apic ? QuadraticBSpline::apicInverseFactor*invD : 0.0;
+        const double ky = apic ? st.apicY*invD : 0.0;
+        C(p, 0) = k*Bx[0]; C(p, 1) = ky*By[0]; C(p, 2) = k*Bx[1]; C(p, 3) = ky*By[1];
+        if (AllQuadratic)
+        {
+            Q(p, 0) = st.invQ*Bq[0];
+            Q(p, 1) = st.invQ*Bq[1];
+        }
+        else if (apic && fittedBase && x(p, 1) < twoCells)
+        {
+            // Even APIC needs the quadratic mode in a fitted base's cell: the
+            // affine field alone would carry to the base's nodes, which the base
+            // condition resets, the curvature error of the velocity profile,
+            // O(d^2 u''), a drag of rho c d per unit of it (c the elastic wave
+            // speed) as large as the basal shear stress of a layer three cells
+            // thick.
+            if (st.quadratic)
+            {
+                for (int a = 0; a < 3; ++a)
+                {
+                    Pair rowQ = zero;
+                    for (int b = 0; b < 3; ++b) rowQ += (wy[b]*st.q[b])*Pair::load(&vel(bx + a, by + b, 0));
+                    Bq += wx[a]*rowQ;
+                }
+            }
+            Q(p, 0) = st.invQ*Bq[0];
+            Q(p, 1) = st.invQ*Bq[1];
+        }
         L(p, 0) = L00*invD; L(p, 1) = L01*invD; L(p, 2) = Gx[1]*invD; L(p, 3) = L11*invD;
         v(p, 0) = vx;
         v(p, 1) = vy;
@@ -164,7 +301,8 @@ TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay
 :
     frame_(frame), clay_(clay), contact_(contact), controls_(controls),
     splitting_{controls.particleSplitting, controls.maxParticleLength},
-    waveSpeed_(std::sqrt(clay.constrainedModulus()/density))
+    waveSpeed_(std::sqrt(clay.constrainedModulus()/density)),
+    fittedBase_(controls.baseBoundary == MpmControls::BaseBoundary::fitted && frame.level.flat())
 {}
 
 double TimeIntegrator::stableTimeStep(const double cellSize, const double maxSpeed) const
@@ -200,61 +338,30 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     // with CUDA atomics): both are zeroed first.
     Kokkos::deep_copy(grid.nodal, 0.0);
     grid.nodalScatter.reset_except(grid.nodal);
-    auto scatter = grid.nodalScatter;
-    const bool cellPressure = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
-    if (cellPressure && !grid.pressureSumsCurrent) averageCellPressure(mp, grid);
-    const auto avg = grid.pressureSums;
-    const auto x = mp.position;
-    const auto v = mp.velocity;
-    const auto C = mp.affine;
-    const auto sig = mp.stress;
-    const auto m = mp.mass;
-    const auto V = mp.volume;
-    const double d = grid.d, invD = 1.0/d, xOrigin = grid.xOrigin;
-    const int i0 = grid.i0, j0 = grid.j0;
-    const double gX = frame_.gravityX, gY = frame_.gravityY;
-    Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
-    {
-        auto acc = scatter.access();
-        const Stencil st(x(p, 0), x(p, 1), xOrigin, invD, i0, j0);
-        const int bx = st.bx, by = st.by;
-        const double fx = st.fx, fy = st.fy;
-        const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
-        const double mp_ = m(p), Vp = V(p);
-        double sxx = sig(p, 0), syy = sig(p, 1);
-        const double sxy = sig(p, 3);
-        if (cellPressure)
-        {
-            // B-bar: the force sees the cell's mean pressure, as the stress update
-            // sees the cell's mean dilatation, so the two stay work-conjugate.
-            const int ci = st.cellX(), cj = st.cellY();
-            const double shift = -UndrainedClay::third*(sxx + syy + sig(p, 2)) - avg(ci, cj, 0);   // the cell's mean
-            sxx += shift;
-            syy += shift;
-        }
-        const double vx = v(p, 0), vy = v(p, 1);
-        const double C00 = C(p, 0)*d, C01 = C(p, 1)*d, C10 = C(p, 2)*d, C11 = C(p, 3)*d;
-        const double Sxx = dt*Vp*sxx*invD, Syy = dt*Vp*syy*invD, Sxy = dt*Vp*sxy*invD;
-        // Node (a, b) receives, over its components (mass, momentum x and y, volume),
-        // w P + w dx PDx + w dy PDy + gx PGx + gy PGy (dx, dy: node - particle in
-        // cells; gx, gy: weight gradients per cell, 1/d is in S). The weights are
-        // products of x and y factors, so each row a is combined once and its three
-        // nodes take three multiply-adds of 4-vectors (one SIMD register on the host).
-        const Quad P = Quad::of({mp_, mp_*(vx + dt*gX), mp_*(vy + dt*gY), Vp});   // momentum with gravity's impulse
-        const Quad PDx = Quad::of({0.0, mp_*C00, mp_*C10, 0.0});
-        const Quad PDy = Quad::of({0.0, mp_*C01, mp_*C11, 0.0});
-        const Quad PGx = Quad::of({0.0, -Sxx, -Sxy, 0.0});
-        const Quad PGy = Quad::of({0.0, -Sxy, -Syy, 0.0});
-        for (int a = 0; a < 3; ++a)
-        {
-            const Quad row = wx[a]*P + (wx[a]*(a - fx))*PDx + dwx[a]*PGx;
-            const Quad rowDy = wx[a]*PDy, rowGy = wx[a]*PGy;
-            for (int b = 0; b < 3; ++b)
-            {
-                addToNode(acc, bx + a, by + b, wy[b]*row + (wy[b]*(b - fy))*rowDy + dwy[b]*rowGy);
-            }
-        }
-    });
+    ParticleToGrid f;
+    f.cellPressure = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
+    if (f.cellPressure && !grid.pressureSumsCurrent) averageCellPressure(mp, grid);
+    f.scatter = grid.nodalScatter;
+    f.avg = grid.pressureSums;
+    f.x = mp.position;
+    f.v = mp.velocity;
+    f.C = mp.affine;
+    f.Q = mp.quadraticMode;
+    f.sig = mp.stress;
+    f.m = mp.mass;
+    f.V = mp.volume;
+    f.d = grid.d;
+    f.invD = 1.0/grid.d;
+    f.xOrigin = grid.xOrigin;
+    f.dt = dt;
+    f.i0 = grid.i0;
+    f.j0 = grid.j0;
+    f.gX = frame_.gravityX;
+    f.gY = frame_.gravityY;
+    f.fittedBase = fittedBase_;
+    f.allQuadratic = controls_.transfer == MpmControls::Transfer::quadratic;
+    f.apic = controls_.transfer != MpmControls::Transfer::pic;
+    Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), f);
     Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
 }
 
@@ -284,6 +391,11 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
     const bool rearWall = frame_.rearWall;
     const double rearX = frame_.rearX;
     const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
+    if (fittedBase_)
+    {
+        updateGridFittedBase(grid, dt);
+        return;
+    }
     Kokkos::parallel_for("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i)
     {
         const double xi = xOrigin + (i0 + i)*d;
@@ -357,6 +469,52 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
     });
 }
 
+void TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double dt) const
+{
+    const auto nodal = grid.nodal;
+    const auto vel = grid.velocity;
+    const double d = grid.d, xOrigin = grid.xOrigin;
+    const int i0 = grid.i0, ja = grid.wj0 - grid.j0, jb = ja + grid.wnj;
+    const int baseRow = -1 - grid.j0;   // storage row of the base's nodes (on y = 0)
+    const BasalContact contact = contact_;
+    const double gSep = std::sqrt(frame_.gravityX*frame_.gravityX + frame_.gravityY*frame_.gravityY);
+    const bool rearWall = frame_.rearWall;
+    const double rearX = frame_.rearX;
+    // A slide covering a column's base gives its base node the volume d^2 (particleToGrid).
+    const double fullVolume = d*d;
+    const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
+    Kokkos::parallel_for("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i)
+    {
+        for (int j = ja; j < jb; ++j)
+        {
+            double m = nodal(i, j, BackgroundGrid::mass);
+            double vx = 0.0, vy = 0.0;
+            if (m > 0.0 && j >= baseRow)
+            {
+                vx = nodal(i, j, BackgroundGrid::momentumX)/m;
+                vy = nodal(i, j, BackgroundGrid::momentumY)/m;
+            }
+            // The base's traction acts on the base's nodes alone: theirs are the
+            // only functions that do not vanish on the base line.
+            if (j == baseRow && m > 0.0)
+            {
+                const double volume = nodal(i, j, BackgroundGrid::volume);
+                const double fraction = volume < fullVolume ? volume/fullVolume : 1.0;
+                contact.apply(1, &m, &vx, &vy, 1.0, 0.0, d, fraction, dt, gSep*dt);
+            }
+            vel(i, j, 0) = vx;
+            vel(i, j, 1) = vy;
+        }
+        if (rearWall && xOrigin + (i0 + i)*d <= rearX + 1e-9*d)
+        {
+            for (int j = ja; j < jb; ++j)
+            {
+                if (vel(i, j, 0) < 0.0) vel(i, j, 0) = 0.0;
+            }
+        }
+    });
+}
+
 StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
 {
     GridToParticle f;
@@ -372,7 +530,11 @@ StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, BackgroundGrid
     f.dt = dt;
     f.i0 = grid.i0;
     f.j0 = grid.j0;
-    f.apic = controls_.transfer == MpmControls::Transfer::apic;
+    f.apic = controls_.transfer != MpmControls::Transfer::pic;
+    f.fittedBase = fittedBase_;
+    f.Q = mp.quadraticMode;
+    f.twoCells = 2.0*grid.d;
+    f.allQuadratic = controls_.transfer == MpmControls::Transfer::quadratic;
     f.average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
     if (f.average)
     {

@@ -162,12 +162,13 @@ namespace
 // Time-averaged mean vertical displacement of the middle third of a long
 // elastic layer released stress free under gravity on a no-slip base; the
 // undamped oscillation averages to the static settlement.
-double layerSettlement(double nu, int cellsPerHeight, double L)
+double layerSettlement(double nu, int cellsPerHeight, double L, mpm::MpmControls::BaseBoundary base)
 {
     scene::Interface iface;
     const double H = 1.0, rho = 1000.0, E = 1e6;
     scene::Scene sc = blockScene(0.0, L, H, rho, 1e12, iface);
     mpm::MpmControls c = controls(cellsPerHeight, 2, nu);
+    c.baseBoundary = base;
     SceneRun r(sc, c, E, false);
     const mpm::HostPoints h0(r.points);
     const double M = E*(1.0 - nu)/((1.0 + nu)*(1.0 - 2.0*nu));
@@ -197,20 +198,28 @@ double layerSettlement(double nu, int cellsPerHeight, double L)
 TEST(SlideMPM, ElasticLayerSettlesAsTheAnalyticalColumn)
 {
     // 1D confined compression: mean displacement over the depth is
-    // rho g H^2/(3 M), M = lambda + 2G the constrained modulus. The error is
-    // first order in the cell size (the base cuts the lowest B-splines);
-    // measured +7.5 % at H/8 and +3.3 % at H/16 for nu = 0.3. At nu = 0.49 the
-    // free ends reach further in, so the layer is longer.
+    // rho g H^2/(3 M), M = lambda + 2G the constrained modulus. With the base a
+    // knot line of the B-splines (fitted, the default) the no-slip condition
+    // acts on the base line: measured +0.6 % at H/8 and -0.5 % at H/16 for
+    // nu = 0.3. Where the base cuts the grid (levelSet) its nodes hold the
+    // lowest cell, an error first order in the cell size: +7.5 % and +3.3 %.
+    // At nu = 0.49 the free ends reach further in, so the layer is longer.
+    using Base = mpm::MpmControls::BaseBoundary;
     for (double nu : {0.3, 0.49})
     {
         const double E = 1e6, M = E*(1.0 - nu)/((1.0 + nu)*(1.0 - 2.0*nu));
         const double exact = 1000.0*9.81*1.0/(3.0*M);
         const double L = nu < 0.4 ? 12.0 : 40.0;
-        const double coarse = layerSettlement(nu, 8, L), fine = layerSettlement(nu, 16, L);
-        std::printf("nu %.2f: settlement H/8 %+.1f %%, H/16 %+.1f %% of the exact %.4e m\n", nu,
-                    100.0*(coarse/exact - 1.0), 100.0*(fine/exact - 1.0), exact);
-        EXPECT_NEAR(fine, exact, 0.05*exact) << "nu = " << nu;
-        EXPECT_LT(std::fabs(fine - exact), 0.6*std::fabs(coarse - exact)) << "nu = " << nu;
+        const double coarse = layerSettlement(nu, 8, L, Base::fitted), fine = layerSettlement(nu, 16, L, Base::fitted);
+        const double cutCoarse = layerSettlement(nu, 8, L, Base::levelSet);
+        const double cutFine = layerSettlement(nu, 16, L, Base::levelSet);
+        std::printf("nu %.2f: settlement H/8 %+.1f %%, H/16 %+.1f %% (base cutting the grid: %+.1f %%, %+.1f %%) "
+                    "of the exact %.4e m\n", nu, 100.0*(coarse/exact - 1.0), 100.0*(fine/exact - 1.0),
+                    100.0*(cutCoarse/exact - 1.0), 100.0*(cutFine/exact - 1.0), exact);
+        EXPECT_NEAR(coarse, exact, 0.02*exact) << "nu = " << nu;
+        EXPECT_NEAR(fine, exact, 0.02*exact) << "nu = " << nu;
+        EXPECT_GT(cutCoarse - exact, 0.05*exact) << "nu = " << nu;
+        EXPECT_LT(std::fabs(cutFine - exact), 0.6*std::fabs(cutCoarse - exact)) << "nu = " << nu;
     }
 }
 
@@ -223,7 +232,8 @@ namespace
 // (1 - nu^2) rho g H^2/(3 E) and a pressure (1 + nu) rho g (H - y)/3.
 // Returns the time-averaged mean settlement; pressureError the time-averaged
 // RMS pressure error over rho g H.
-double freeBlockSettlement(double nu, mpm::MpmControls::VolumetricLocking locking, int ppc, double& pressureError)
+double freeBlockSettlement(double nu, mpm::MpmControls::VolumetricLocking locking, int ppc, double& pressureError,
+                           mpm::MpmControls::BaseBoundary base)
 {
     scene::Interface iface;
     iface.type = scene::Interface::Type::frictional;
@@ -232,6 +242,7 @@ double freeBlockSettlement(double nu, mpm::MpmControls::VolumetricLocking lockin
     scene::Scene sc = blockScene(0.0, L, H, rho, 1e12, iface);
     mpm::MpmControls c = controls(8, ppc, nu);
     c.volumetricLocking = locking;
+    c.baseBoundary = base;
     SceneRun r(sc, c, E, false);
     const mpm::HostPoints h0(r.points);
     const double period = 4.0*H/std::sqrt(E/rho);
@@ -266,15 +277,22 @@ double freeBlockSettlement(double nu, mpm::MpmControls::VolumetricLocking lockin
 TEST(SlideMPM, CellAveragingRemovesVolumetricLocking)
 {
     // At nu = 0.49 the per-particle volumetric constraint of plain MPM stiffens
-    // the block (too little settlement) and scatters its pressure; the
-    // cell-averaged B-bar follows the exact solution.
+    // the block (too little settlement) and scatters its pressure, most where
+    // the base cuts the grid: two rows of base nodes hold the normal velocity
+    // of the lowest cell. The cell-averaged B-bar relieves it. (With the
+    // B-splines fitted to the base only the base line is held, and the free
+    // block does not lock: measured, plain 2.1767e-03 m and B-bar 2.1783e-03 m,
+    // RMS pressure errors 0.217 and 0.211; validation/mpm/README.md has what
+    // the B-bar still does in a sliding slide.)
+    using Locking = mpm::MpmControls::VolumetricLocking;
+    const auto cut = mpm::MpmControls::BaseBoundary::levelSet;
     const double nu = 0.49, E = 1e6;
     const double exact = (1.0 - nu*nu)*1000.0*9.81/(3.0*E);
     double errNone, errBbar;
     const int ppc = 4;   // the paper's 4 x 4: the more particles per cell, the more plain MPM locks
-    const double none = freeBlockSettlement(nu, mpm::MpmControls::VolumetricLocking::none, ppc, errNone);
-    const double bbar = freeBlockSettlement(nu, mpm::MpmControls::VolumetricLocking::cellAveraging, ppc, errBbar);
-    std::printf("free block settlement: exact %.4e m, plain %.4e m, B-bar %.4e m; "
+    const double none = freeBlockSettlement(nu, Locking::none, ppc, errNone, cut);
+    const double bbar = freeBlockSettlement(nu, Locking::cellAveraging, ppc, errBbar, cut);
+    std::printf("free block on a base cutting the grid: settlement exact %.4e m, plain %.4e m, B-bar %.4e m; "
                 "RMS pressure error / (rho g H): plain %.3f, B-bar %.3f\n", exact, none, bbar, errNone, errBbar);
     EXPECT_NEAR(bbar, exact, 0.1*exact);
     EXPECT_LT(std::fabs(bbar - exact), std::fabs(none - exact));
@@ -510,8 +528,9 @@ TEST(SlideMPM, ShearBandThicknessRemouldsTwoMeshesAlike)
     // slide whose 5 m faces collapse (4 s_uo/(rho g) = 3.4 m) and remould.
     // Counted per cell, the collapse zone's strain grows as the cells shrink
     // and so does the runout; counted as a band 1/60 of the slide thick
-    // (the paper's cell), H0/10 and H0/20 agree. (H0/40, where more bands fit
-    // in the slide, parts from both: 12.0 m at 3 s; validation/mpm/shearBand.md.)
+    // (the paper's cell), H0/10 and H0/20 agree far better. (H0/40, where more bands fit
+    // in the slide, parted from both where the base cut the grid: 12.0 m at 3 s;
+    // validation/mpm/shearBand.md.)
     scene::Interface iface;
     scene::Scene sc = blockScene(3.43, 40.0, 5.0, 600.0, 5000.0, iface);
     sc.rheology.deltaRem = 0.025;
@@ -530,7 +549,9 @@ TEST(SlideMPM, ShearBandThicknessRemouldsTwoMeshesAlike)
     const double coarseCell = travel(10, 0.0), fineCell = travel(20, 0.0);
     std::printf("Case 11 front travel at 3 s, H0/10 and H0/20: band %.2f and %.2f m, per cell %.2f and %.2f m\n",
                 coarse, fine, coarseCell, fineCell);
-    EXPECT_NEAR(coarse, fine, 0.05*fine);          // measured 1 %
-    EXPECT_GT(fineCell, 1.25*coarseCell);          // measured 39 %: what the band removes
+    // Measured with the B-splines fitted to the base: the band's runs 7 % apart,
+    // per cell 20 % (where the base cut the grid: 1 % and 39 %).
+    EXPECT_NEAR(coarse, fine, 0.1*fine);
+    EXPECT_GT(fineCell, 1.15*coarseCell);          // what the band removes
     EXPECT_GT(coarse, 1.5*fineCell);               // and the band remoulds the collapse far sooner
 }
