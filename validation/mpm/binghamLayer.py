@@ -16,10 +16,12 @@ settles in a few rho Y^2/mu = 1.5 s; after about 10 s the collapse of the
 layer's ends has thinned its middle), bins them by height, and compares
 velocity and shear stress with the profile, for several cells and both ways
 the grid can meet the base (fitted: the base a knot line of the B-splines;
-levelSet: the base cutting the grid); it writes binghamLayer.md and
-binghamLayer.png beside itself.
+levelSet: the base cutting the grid), with APIC and, on the fitted base, the
+quadratic transfer; it writes binghamLayer.md and binghamLayer.png beside
+itself.
 
-Usage: validation/mpm/binghamLayer.py [--cells 3,5,10] [--bases fitted,levelSet] [--work DIR]   (after ./Allwmake)"""
+Usage: validation/mpm/binghamLayer.py [--cells 3,5,10] [--configs fitted/apic,levelSet/apic,fitted/quadratic]
+       [--work DIR]   (after ./Allwmake)"""
 import argparse
 import math
 import os
@@ -80,16 +82,17 @@ def mean_profile(case, t0, t1, cell):
     return [tuple(float(np.mean([f[k][c] for f in frames])) for c in range(3)) for k in range(n)]
 
 
-def run(work, cells, base, app="slideMPM"):
-    name = "bingham_h%d_%s" % (cells, base)
+def run(work, cells, base, app="slideMPM", transfer="apic"):
+    name = "bingham_h%d_%s_%s" % (cells, base, transfer)
     case = make_case(os.path.join(top, "tutorials", "table1", "case01"), work, name,
                      scene={"length": LENGTH, "height": H, "s_uo": S_UO, "eta": ETA, "n": 1, "gdotRef": GDOT_REF},
                      control={"endTime": T_LATE, "writeInterval": 0.5, "stopAtRest": "no"},
                      dicts={"system/mpmDict": "setting fast;\ncellsPerHeight %d;\nparticlesPerCell 2;\n"
-                                              "baseBoundary %s;\nwriteState no;\nprogressInterval 30;\n" % (cells, base)})
+                                              "baseBoundary %s;\ntransfer %s;\nwriteState no;\nprogressInterval 30;\n"
+                                              % (cells, base, transfer)})
     summary, _ = run_method(app, case)
     cell = H/cells
-    return {"cells": cells, "base": base, "early": mean_profile(case, T_EARLY - 3.0, T_EARLY, cell),
+    return {"cells": cells, "base": base + ", " + transfer, "early": mean_profile(case, T_EARLY - 3.0, T_EARLY, cell),
             "late": mean_profile(case, T_EARLY, T_LATE, cell),
             "wall": summary["wall_time_s"], "particles": summary["problem_size"]}
 
@@ -111,18 +114,18 @@ PLUG_VELOCITY = float(exact_velocity(np.array(H)))
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cells", default="3,5,10")
-    ap.add_argument("--bases", default="fitted,levelSet")
+    ap.add_argument("--configs", default="fitted/apic,levelSet/apic,fitted/quadratic")
     ap.add_argument("--work", default=None)
     args = ap.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="binghamLayer_")
     plug = PLUG_VELOCITY
     results = []
-    for c, base in ((int(v), b) for v in args.cells.split(",") for b in args.bases.split(",")):
-        r = compare(run(work, c, base))
+    for c, base, tr in ((int(v), *b.split("/")) for v in args.cells.split(",") for b in args.configs.split(",")):
+        r = compare(run(work, c, base, transfer=tr))
         results.append(r)
-        print("H/%d, %s base: surface velocity %.3f (to %g s), %.3f (to %g s) m/s against %.3f; RMS profile error %.3f m/s; "
+        print("H/%d, %s base, %s: surface velocity %.3f (to %g s), %.3f (to %g s) m/s against %.3f; RMS profile error %.3f m/s; "
               "shear stress in the top row %.1f Pa (exact %.1f); %.1f s"
-              % (c, base, r["surfaceEarly"], T_EARLY, r["surfaceLate"], T_LATE, plug, r["rms"], r["tauTop"], r["tauTopExact"], r["wall"]),
+              % (c, base, tr, r["surfaceEarly"], T_EARLY, r["surfaceLate"], T_LATE, plug, r["rms"], r["tauTop"], r["tauTopExact"], r["wall"]),
               flush=True)
 
     lines = ["# A Bingham layer on a no-slip slope (written by binghamLayer.py)", "",
@@ -131,7 +134,7 @@ def main():
              "the middle, binned by height, against the steady Bingham profile (sheared layer Y = %.2f m under a "
              "plug at %.3f m/s, shear stress rho g S (H - z))."
              % (LENGTH, H, RHO, THETA, S_UO, MU, ETA, YIELD_DEPTH, plug), "",
-             "| cell | base | particles | surface velocity, mean over %g-%g s / %g-%g s [m/s] | against the plug | RMS profile error, %g-%g s "
+             "| cell | base, transfer | particles | surface velocity, mean over %g-%g s / %g-%g s [m/s] | against the plug | RMS profile error, %g-%g s "
              "[m/s] | shear stress, top row [Pa] (exact) | wall [s] |" % (T_EARLY - 3, T_EARLY, T_EARLY, T_LATE, T_EARLY, T_LATE),
              "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in results:
@@ -156,7 +159,7 @@ def main():
     a2.axvline(S_UO, color="0.6", ls=":", label="s_uo")
     for r in results:
         z = [p[0] for p in r["late"]]
-        style = "o-" if r["base"] == "fitted" else "x--"
+        style = {"fitted, apic": "o-", "levelSet, apic": "x--"}.get(r["base"], "s:")
         a1.plot([p[1] for p in r["late"]], z, style, ms=3, label="H/%d, %s, %g-%g s" % (r["cells"], r["base"], T_EARLY, T_LATE))
         a2.plot([p[2] for p in r["late"]], z, style, ms=3, label="H/%d, %s" % (r["cells"], r["base"]))
     a1.set_xlabel("velocity along the slope [m/s]")
