@@ -14,11 +14,14 @@ runs whose expected values come from physics, not from tuning.
     counted per H0/60 shear band), 10 s: the front's travel lies within 3 % of
     the one table1.json (the report) holds for 10 s.
 
-  - A Bingham layer (binghamLayer.py) on a no-slip slope, cell H/10: the surface
-    velocity (mean over 7-10 s) within 6 % of the analytical plug velocity, the
-    RMS difference from the steady Bingham profile below 8 % of it, and the
-    shear stress of the top row of particles below a quarter of the basal one
-    (the free surface carries no traction).
+  - A Bingham layer (binghamLayer.py) on a no-slip slope, cell H/10, the base a
+    knot line of the B-splines: the surface velocity (mean over 7-10 s) within
+    4 % of the analytical plug velocity with the quadratic transfer (measured
+    -1.6 %) and within 8 % with APIC (measured -5.9 %: APIC's transfer loss
+    across the flow, validation/mpm/README.md open problem 10), the RMS
+    difference from the steady Bingham profile below 8 % of it, and the shear
+    stress of the top row of particles below a quarter of the basal one (the
+    free surface carries no traction).
 
 Usage: ciCheck.py <slideMPM> <work dir>"""
 import json
@@ -93,19 +96,21 @@ def main():
     if not ok:
         failures.append("case 11")
     import binghamLayer
-    r = binghamLayer.compare(binghamLayer.run(work, 10, "fitted", app))
     plug = binghamLayer.PLUG_VELOCITY
     basal = binghamLayer.RHO*binghamLayer.G*binghamLayer.S*binghamLayer.H
-    ok = (abs(r["surfaceLate"]/plug - 1.0) <= 0.06 and r["rms"] <= 0.08*plug and abs(r["tauTop"]) <= 0.25*basal)
-    print("bingham layer H/10: surface %.3f m/s against the plug's %.3f (%+.1f %%), RMS profile error %.3f m/s, "
-          "top-row shear stress %.1f Pa (basal %.1f Pa): %s"
-          % (r["surfaceLate"], plug, 100.0*(r["surfaceLate"]/plug - 1.0), r["rms"], r["tauTop"], basal,
-             "ok" if ok else "FAIL"))
-    if not ok:
-        failures.append("bingham layer")
+    for transfer, tolerance in (("quadratic", 0.04), ("apic", 0.08)):
+        r = binghamLayer.compare(binghamLayer.run(work, 10, "fitted", app, transfer))
+        ok = (abs(r["surfaceLate"]/plug - 1.0) <= tolerance and r["rms"] <= 0.08*plug
+              and abs(r["tauTop"]) <= 0.25*basal)
+        print("bingham layer H/10, %s: surface %.3f m/s against the plug's %.3f (%+.1f %%), RMS profile error %.3f m/s, "
+              "top-row shear stress %.1f Pa (basal %.1f Pa): %s"
+              % (transfer, r["surfaceLate"], plug, 100.0*(r["surfaceLate"]/plug - 1.0), r["rms"], r["tauTop"], basal,
+                 "ok" if ok else "FAIL"))
+        if not ok:
+            failures.append("bingham layer (%s)" % transfer)
     if failures:
         raise SystemExit("FAIL: " + ", ".join(failures))
-    print("4 passed, 0 failed")
+    print("5 passed, 0 failed")
 
 
 if __name__ == "__main__":
