@@ -17,17 +17,36 @@ using Policy = Kokkos::RangePolicy<ExecutionSpace>;
 
 // Particle-to-grid transfer: mass, momentum (the particle's velocity field at
 // the node, gravity's impulse and the internal force's) and volume.
-struct ParticleToGrid
+// What both transfers read: the particles' fields, the grid's place, the step
+// and the transfer's kind.
+struct TransferSetup
+{
+    ParticleVector x, v, Q;       // Q: the quadratic mode's coefficient
+    ParticleTensor C;
+    ParticleScalar m, V;
+    double invD, xOrigin, dt;
+    int i0, j0;
+    bool apic, fittedBase;
+    bool allQuadratic;            // the quadratic transfer: every particle's mode
+
+    TransferSetup() = default;
+    TransferSetup(const MaterialPoints& mp, const BackgroundGrid& grid, const double dt_,
+                  const MpmControls::Transfer transfer, const bool fitted)
+    :
+        x(mp.position), v(mp.velocity), Q(mp.quadraticMode), C(mp.affine), m(mp.mass), V(mp.volume),
+        invD(1.0/grid.d), xOrigin(grid.xOrigin), dt(dt_), i0(grid.i0), j0(grid.j0),
+        apic(transfer != MpmControls::Transfer::pic), fittedBase(fitted),
+        allQuadratic(transfer == MpmControls::Transfer::quadratic)
+    {}
+};
+
+struct ParticleToGrid : TransferSetup
 {
     NodeScatter scatter;
     NodeField avg;                // B-bar: the cell's mean pressure
-    ParticleVector x, v, Q;
-    ParticleTensor C, sig;
-    ParticleScalar m, V;
-    double d, invD, xOrigin, dt, gX, gY;
-    int i0, j0;
-    bool cellPressure, fittedBase, apic;
-    bool allQuadratic;            // the quadratic transfer: every particle's mode
+    ParticleTensor sig;
+    double d, gX, gY;
+    bool cellPressure;
 
     KOKKOS_INLINE_FUNCTION void operator()(const int p) const
     {
@@ -118,23 +137,18 @@ struct ParticleToGrid
 
 // Grid-to-particle transfer (velocity, APIC affine field, velocity gradient) with the B-bar's cell sums of the dilatation
 // and the step's reductions (bounding box, speed, kinetic energy, finiteness) in the same pass.
-struct GridToParticle
+struct GridToParticle : TransferSetup
 {
     typedef double value_type[];
     enum { xmax = 0, negXmin, ymax, negYmin, speed2, nonFinite, kinetic, nStats };
     const unsigned value_count = nStats;
 
-    ParticleVector x, v;
-    ParticleTensor C, L;
-    ParticleVector Q;             // the quadratic mode's coefficient
-    ParticleScalar m, V;
+    ParticleTensor L;
     NodeField vel;
     NodeScatter cellDilatation;   // B-bar: the cell sums of V tr(L) and V
-    double invD, xOrigin, dt;
     double twoCells;              // [m]: below it, a particle may be in the base's cell at the next particle-to-grid
-    int i0, j0, count;
-    bool apic, average, fittedBase;
-    bool allQuadratic;            // the quadratic transfer: every particle's mode
+    int count;
+    bool average;
 
     // A work item is a run of particlesPerItem particles, whose statistics are
     // gathered in registers and merged into the thread's once.
@@ -339,28 +353,15 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     Kokkos::deep_copy(grid.nodal, 0.0);
     grid.nodalScatter.reset_except(grid.nodal);
     ParticleToGrid f;
+    static_cast<TransferSetup&>(f) = TransferSetup(mp, grid, dt, controls_.transfer, fittedBase_);
     f.cellPressure = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
     if (f.cellPressure && !grid.pressureSumsCurrent) averageCellPressure(mp, grid);
     f.scatter = grid.nodalScatter;
     f.avg = grid.pressureSums;
-    f.x = mp.position;
-    f.v = mp.velocity;
-    f.C = mp.affine;
-    f.Q = mp.quadraticMode;
     f.sig = mp.stress;
-    f.m = mp.mass;
-    f.V = mp.volume;
     f.d = grid.d;
-    f.invD = 1.0/grid.d;
-    f.xOrigin = grid.xOrigin;
-    f.dt = dt;
-    f.i0 = grid.i0;
-    f.j0 = grid.j0;
     f.gX = frame_.gravityX;
     f.gY = frame_.gravityY;
-    f.fittedBase = fittedBase_;
-    f.allQuadratic = controls_.transfer == MpmControls::Transfer::quadratic;
-    f.apic = controls_.transfer != MpmControls::Transfer::pic;
     Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), f);
     Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
 }
@@ -518,23 +519,10 @@ void TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double dt)
 StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
 {
     GridToParticle f;
-    f.x = mp.position;
-    f.v = mp.velocity;
-    f.C = mp.affine;
+    static_cast<TransferSetup&>(f) = TransferSetup(mp, grid, dt, controls_.transfer, fittedBase_);
     f.L = mp.velocityGradient;
-    f.m = mp.mass;
-    f.V = mp.volume;
     f.vel = grid.velocity;
-    f.invD = 1.0/grid.d;
-    f.xOrigin = grid.xOrigin;
-    f.dt = dt;
-    f.i0 = grid.i0;
-    f.j0 = grid.j0;
-    f.apic = controls_.transfer != MpmControls::Transfer::pic;
-    f.fittedBase = fittedBase_;
-    f.Q = mp.quadraticMode;
     f.twoCells = 2.0*grid.d;
-    f.allQuadratic = controls_.transfer == MpmControls::Transfer::quadratic;
     f.average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
     if (f.average)
     {
