@@ -381,6 +381,11 @@ void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGri
 
 void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
 {
+    if (fittedBase_)
+    {
+        updateGridFittedBase(grid, dt);
+        return;
+    }
     const auto nodal = grid.nodal;
     const auto vel = grid.velocity;
     const double d = grid.d, xOrigin = grid.xOrigin;
@@ -392,11 +397,6 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
     const bool rearWall = frame_.rearWall;
     const double rearX = frame_.rearX;
     const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
-    if (fittedBase_)
-    {
-        updateGridFittedBase(grid, dt);
-        return;
-    }
     Kokkos::parallel_for("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i)
     {
         const double xi = xOrigin + (i0 + i)*d;
