@@ -295,6 +295,16 @@ KOKKOS_INLINE_FUNCTION double stretchFactor(const double x)
     return 1.0 + x*(1.0 + x*(0.5 + x*(1.0/6.0 + x*(1.0/24.0 + x*(1.0/120.0)))));
 }
 
+// The rear wall (normal to the frame's x axis) holds material back and lets it
+// go: grid column i's nodes in rows [ja, jb) lose any upslope velocity.
+KOKKOS_INLINE_FUNCTION void holdAtRearWall(const NodeField& vel, const int i, const int ja, const int jb)
+{
+    for (int j = ja; j < jb; ++j)
+    {
+        if (vel(i, j, 0) < 0.0) vel(i, j, 0) = 0.0;
+    }
+}
+
 StepStatistics toStatistics(const double* r)
 {
     StepStatistics s;
@@ -459,14 +469,7 @@ void TimeIntegrator::updateGrid(BackgroundGrid& grid, const double dt) const
                 vel(i, row[k], 1) = cvy[k];
             }
         }
-        // The rear wall (normal to the frame's x axis) holds material back and lets it go.
-        if (rearWall && xi <= rearX + 1e-9*d)
-        {
-            for (int j = ja; j < jb; ++j)
-            {
-                if (vel(i, j, 0) < 0.0) vel(i, j, 0) = 0.0;
-            }
-        }
+        if (rearWall && xi <= rearX + 1e-9*d) holdAtRearWall(vel, i, ja, jb);
     });
 }
 
@@ -506,13 +509,7 @@ void TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double dt)
             vel(i, j, 0) = vx;
             vel(i, j, 1) = vy;
         }
-        if (rearWall && xOrigin + (i0 + i)*d <= rearX + 1e-9*d)
-        {
-            for (int j = ja; j < jb; ++j)
-            {
-                if (vel(i, j, 0) < 0.0) vel(i, j, 0) = 0.0;
-            }
-        }
+        if (rearWall && xOrigin + (i0 + i)*d <= rearX + 1e-9*d) holdAtRearWall(vel, i, ja, jb);
     });
 }
 
