@@ -10,7 +10,7 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "baseRefinement", "baseGrowth", "regularisation", "plugCreepRate", "processors", "endTime"});
+                      "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling", "plugCreepRate", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
     c.cellsPerHeight = c.setting == "reference" ? 60 : 20;
@@ -47,6 +47,10 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
         c.baseGrowth = d.getScalarInRange("baseGrowth", 1.0, 2.0, false, true, "cell growth ratio away from the base");
     }
     if (d.found("regularisation")) c.regularisation = d.getWordOneOf("regularisation", {"cap", "papanastasiou"});
+    if (d.found("pressureCoupling"))
+    {
+        c.pressureCoupling = d.getWordOneOf("pressureCoupling", {"simplec", "piso"});
+    }
     if (d.found("plugCreepRate"))
     {
         c.plugCreepRate = d.getScalarInRange("plugCreepRate", 0.0, 1e3, false, true, "plug creep rate [1/s]");
@@ -68,7 +72,7 @@ std::string CfdControls::describe() const
     std::ostringstream os;
     os << "setting " << setting << ", H0/" << cellsPerHeight;
     if (baseRefinement > 1) os << " (H0/" << cellsPerHeight*baseRefinement << " on the base)";
-    os << ", regularisation " << regularisation
+    os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << ", processors " << processors;
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";
     return os.str();

@@ -362,15 +362,15 @@ PIMPLE
     nOuterCorrectors    1;
     nCorrectors         3;
     nNonOrthogonalCorrectors 0;
-}
+)" + std::string(c.pressureCoupling == "simplec" ?
+"    // SIMPLEC: the pressure moves a plug whole (cfdDict pressureCoupling).\n    consistent          yes;\n" :
+"    consistent          no;\n") + R"(}
 
-relaxationFactors
-{
-    equations
-    {
-        ".*"            1;
-    }
-}
+// No relaxationFactors: even a factor of 1 makes fvMatrix::relax() add the
+// largest component of a wall's coefficient to the diagonal of every component,
+// which on a slipping base (directionMixed) ties the tangential velocity of the
+// base cells to its old value, a drag of order mu/d that held a frictionless
+// block still (validation/cfd/README.md).
 )");
         {
             std::ostringstream os;

@@ -59,7 +59,7 @@ def test_peer(work):
     for label, scene in [("no rate effect", {"eta": 0}), ("rate effect n = 0.23", {"eta": 0.45, "n": 0.23})]:
         tag = "peer_eta%g" % scene["eta"]
         sf = make_case(FLUME, work, tag + "_slideFoam", scene=scene, control={"endTime": 0.5, "writeInterval": 0.5, "writePrecision": 16},
-                       cfd={"cellsPerHeight": 10, "reach": 2})
+                       cfd={"cellsPerHeight": 10, "reach": 2, "pressureCoupling": "piso"})
         prepare(sf)
         ref = os.path.join(work, tag + "_interFoam")
         if os.path.exists(ref):
@@ -82,11 +82,13 @@ def test_peer(work):
         run(ref, "interFoam")
         t = time_dirs(sf)[-1]
         check(t == time_dirs(ref)[-1] and abs(float(t) - 0.5) < 1e-9, "%s: both reach t = 0.5 s (%s)" % (label, t))
-        for field, tol in [("U", 1e-8), ("alpha.slide", 1e-8), ("p_rgh", 1e-5)]:
+        # Equal to round-off amplified by the solvers: 1e-8 of each field's scale.
+        for field in ("U", "alpha.slide", "p_rgh"):
             a, b = read_field(sf, t, field), read_field(ref, t, field)
             diff = float(np.max(np.abs(a - b)))
             scale = float(np.max(np.abs(b)))
-            check(diff <= tol, "%s: %s equal to interFoam's: max |difference| %.3g (scale %.3g, tolerance %g)"
+            tol = 1e-8*scale
+            check(diff <= tol, "%s: %s equal to interFoam's: max |difference| %.3g (scale %.3g, tolerance %.3g)"
                   % (label, field, diff, scale, tol))
         su = summary(sf)
         check(su["xi_max"] > 0, "%s: xi accumulated (max %.3g) without feeding back (deltaRem 1)" % (label, su["xi_max"]))
@@ -122,9 +124,13 @@ def test_flume(work):
     check(bool(np.all(np.diff(r["front"]) >= -1e-3)), "front never retreats")
 
 
-def base_case(work, name, interface):
-    # The flume's slurry released without its end wall: a weak slide that flows.
-    c = make_case(FLUME, work, name, scene={"rearWall": "no"}, control={"endTime": 1.5, "writeInterval": 0.5},
+def base_case(work, name, interface, s_uo=None):
+    # The flume's slurry released without its end wall: a weak slide that flows
+    # (or, with s_uo 2 kPa, a block whose faces stand: 4 s_uo/(rho g) = 0.76 m > H0).
+    scene = {"rearWall": "no"}
+    if s_uo is not None:
+        scene["s_uo"] = s_uo
+    c = make_case(FLUME, work, name, scene=scene, control={"endTime": 1.5, "writeInterval": 0.5},
                   cfd={"cellsPerHeight": 10, "reach": 8, "behind": 4})
     p = os.path.join(c, "constant", "sceneProperties")
     text = open(p).read()
@@ -170,6 +176,12 @@ def test_base(work):
           % (travel["noSlip"], travel["s_b 20 Pa"], travel["s_b 0"]))
     check(travel["noSlip"] < travel["hydroplaning C_F 0.5"] < travel["s_b 0"],
           "hydroplaning lies between no-slip and frictionless: %.3f m" % travel["hydroplaning C_F 0.5"])
+    # A plug (capped viscosity 3.5e5 Pa s) on a frictionless base slides as a rigid
+    # block. Before SIMPLEC and without fvMatrix::relax(1) it stayed put (0.001 m).
+    block = base_case(work, "base_block_s_b0", "interface frictional;\n    s_b 0;", s_uo=2000)
+    travel_block = centre_of_mass_travel(block, t)
+    check(abs(travel_block/exact - 1) < 0.05, "strong block on a frictionless base: centre of mass moved %.3f m, "
+          "g sin(theta) t^2/2 = %.3f m (within 5 %%)" % (travel_block, exact))
 
 
 def test_remoulding(work):
@@ -197,6 +209,14 @@ def test_remoulding(work):
 def test_parallel(work):
     serial = flume_case(work, "serial", end=1.0, write=0.5)
     par = flume_case(work, "parallel", end=1.0, write=0.5)
+    # p_rgh solved to 1e-10 instead of 1e-7: with SIMPLEC the free surface's
+    # interface cells follow the pressure solver's round-off (the ranks' GAMG
+    # agglomerations differ): 1.1 % of the largest speed at 1e-7, 0.28 % at 1e-10.
+    for c in (serial, par):
+        fv = os.path.join(c, "system", "fvSolution")
+        text = open(fv).read()
+        assert text.count("tolerance       1e-7;") == 1, "p_rgh's tolerance not found in " + fv
+        open(fv, "w").write(text.replace("tolerance       1e-7;", "tolerance       1e-10;"))
     run_slidefoam(serial)
     run_slidefoam(par, processors=2)
     ss, sp = summary(serial), summary(par)
