@@ -113,6 +113,42 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
 }
 
 
+namespace
+{
+// valueFraction is I on a stuck face and n n on a slipping one.
+inline bool slipping(const Foam::symmTensor& valueFraction)
+{
+    return Foam::tr(valueFraction) < 1.5;
+}
+}
+
+
+Foam::tmp<Foam::Field<Foam::vector>>
+Foam::slideBaseVelocityFvPatchVectorField::gradientInternalCoeffs() const
+{
+    tmp<Field<vector>> tc(directionMixedFvPatchVectorField::gradientInternalCoeffs());
+    Field<vector>& c = tc.ref();
+    forAll(c, facei)
+    {
+        if (slipping(valueFraction()[facei])) c[facei] = vector::zero;
+    }
+    return tc;
+}
+
+
+Foam::tmp<Foam::Field<Foam::vector>>
+Foam::slideBaseVelocityFvPatchVectorField::gradientBoundaryCoeffs() const
+{
+    tmp<Field<vector>> tc(directionMixedFvPatchVectorField::gradientBoundaryCoeffs());
+    Field<vector>& c = tc.ref();
+    forAll(c, facei)
+    {
+        if (slipping(valueFraction()[facei])) c[facei] = refGrad()[facei];
+    }
+    return tc;
+}
+
+
 void Foam::slideBaseVelocityFvPatchVectorField::write(Ostream& os) const
 {
     fvPatchVectorField::write(os);
