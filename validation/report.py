@@ -232,9 +232,9 @@ def field_section(field):
         return [], {}
     lines = ["### Field cases", "",
              "The tutorials' runs (`field/runs.py`), all three methods on the polyline bases (slideFoam on vertical "
-             "columns, gravity down). slideFoam cannot carry the Finneidfjord block (a 6.8e6 Pa s plug; "
-             "`cfd/README.md`): it runs to 60 s only (`system/cfdDict` endTime), and its runout is where the block "
-             "was then. Geometry and its sensitivity: `field/sensitivity.md`.", "",
+             "columns, gravity down). slideFoam runs the Finneidfjord block to 60 s only (`system/cfdDict` endTime): "
+             "its runout is where the block was then, against slideDAM's 247.5 m at 60 s (`cfd/README.md`). "
+             "Geometry and its sensitivity: `field/sensitivity.md`.", "",
              "| case | paper / observed [m] | method | runout [m] | peak front velocity [m/s] | mechanism | wall [s] |",
              "|---|---|---|---|---|---|---|"]
     hist = {}

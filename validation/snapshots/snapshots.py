@@ -5,8 +5,8 @@ Case 2 at 10 s, Case 9 at 20 s, Case 11 at 10 s and 30 s. Runs slideDAM (fast,
 last snapshot time, reads their .pvd series and writes snapshots.png and
 snapshots.json here. ~5 min on 2 cores.
 
-slideFoam is not drawn: the paper gives CFD for Cases 1-3 only, and slideFoam's
-strong plugs (Cases 9 and 11, s_uo = 5 kPa) are not credible (cfd/README.md).
+slideFoam is not drawn: the paper gives CFD for Cases 1-3 only, and these
+snapshots (Cases 2, 9, 11) compare the DAM's profile with the MPM's particles.
 """
 import json
 import math
