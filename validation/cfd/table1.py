@@ -24,11 +24,12 @@ from runner import which  # noqa: E402
 from slidefoam_io import read_summary, read_runout  # noqa: E402
 
 
-def run_case(c, cells, refinement, processors, work, scene_end=False):
+def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None, retries=2):
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
-    d = make_case(src, work, "case%02d_H0_%d" % (c, cells),
-                  cfd={"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement,
-                       "processors": processors})
+    cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement, "processors": processors}
+    if reach:
+        cfd["reach"] = "%.1f" % reach
+    d = make_case(src, work, "case%02d_H0_%d" % (c, cells), cfd=cfd)
     run(d, which("slideDAM"), "-case", ".")
     dam = read_summary(os.path.join(d, "postProcessing", "slideDAM", "summary.json"))
     if dam["at_rest"] and not scene_end:
@@ -39,12 +40,21 @@ def run_case(c, cells, refinement, processors, work, scene_end=False):
         prepare(d)
         run_slidefoam(d, processors)
     except RuntimeError as e:
+        log = open(os.path.join(d, "log.slideFoam")).read() if os.path.exists(os.path.join(d, "log.slideFoam")) \
+            else ""
+        if "downslope end of the mesh" in log and retries > 0:
+            # slideDAM's runout, which sizes the mesh, is no bound on the CFD's (Case 8: slideDAM stops at 47 m,
+            # the CFD's block slides on): regenerate with three times the travel the front had when it left.
+            front = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))["front"][-1]
+            print("Case %d H0/%d: the front left the mesh at %.1f m; rerunning with reach %.1f m"
+                  % (c, cells, front, 3.0*front), flush=True)
+            return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1)
         return {"case": c, "cells": cells, "failed": str(e)[-600:]}
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
             "wall": s["wall_time_s"], "n": s["problem_size"], "volume_change": s["volume_relative_change"],
-            "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], "refinement": refinement,
+            "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], "refinement": refinement, "reach": reach,
             "front_velocity": float(r["frontVelocity"][-1]), "max_velocity": float(r["maxVelocity"][-1]),
             "history": [[float(t), float(f)] for t, f in zip(r["time"], r["front"])]}
 

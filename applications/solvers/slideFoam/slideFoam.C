@@ -60,6 +60,7 @@ Description
 #include "slideSceneObject.H"
 #include "slideRheology.H"
 #include "slideRunout.H"
+#include "slideBaseVelocityFvPatchVectorField.H"
 #include "outputContract.H"
 #include "fluxReconstruction.H"
 

@@ -2,6 +2,7 @@
 #include "slideSceneObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
+#include "fvcGrad.H"
 
 void Foam::slideBaseVelocityFvPatchVectorField::setStuck()
 {
@@ -120,6 +121,25 @@ inline bool slipping(const Foam::symmTensor& valueFraction)
 {
     return Foam::tr(valueFraction) < 1.5;
 }
+
+// The base's faces within H0 of a kink of its polyline (the mesh of a
+// polyline base is laid in the scene's (x, z) plane), where a plug turns.
+Foam::boolList bendZone(const Foam::fvPatch& patch, const slide::scene::Scene& sc)
+{
+    using namespace Foam;
+    boolList zone(patch.size(), false);
+    const vectorField& centres = patch.Cf();
+    for (int k = 1; k < sc.base.nSegments(); ++k)
+    {
+        const slide::scene::Point2 kink = sc.base.point(sc.base.segmentStart(k));
+        forAll(zone, facei)
+        {
+            const scalar dx = centres[facei].x() - kink.x, dz = centres[facei].y() - kink.z;
+            if (sqr(dx) + sqr(dz) < sqr(sc.slide.height)) zone[facei] = true;
+        }
+    }
+    return zone;
+}
 }
 
 
@@ -146,6 +166,75 @@ Foam::slideBaseVelocityFvPatchVectorField::gradientBoundaryCoeffs() const
         if (slipping(valueFraction()[facei])) c[facei] = refGrad()[facei];
     }
     return tc;
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::slideBaseVelocityFvPatchVectorField::transposeShearFlux
+(
+    const tensorField& gradUf, const scalarField& muf
+) const
+{
+    tmp<vectorField> tflux(new vectorField(size(), Zero));
+    vectorField& flux = tflux.ref();
+    const vectorField& Sf = patch().Sf();
+    const vectorField n(patch().nf());
+    const boolList bent(bendZone(patch(), slideSceneObject::New(db())));
+    forAll(flux, facei)
+    {
+        if (!bent[facei] || !slipping(valueFraction()[facei])) continue;
+        const vector f = muf[facei]*(Sf[facei] & dev2(Foam::T(gradUf[facei])));
+        flux[facei] = f - n[facei]*(n[facei] & f);
+    }
+    return tflux;
+}
+
+
+Foam::tmp<Foam::volVectorField::Internal> Foam::slideBaseVelocityFvPatchVectorField::slipTransposeShear
+(
+    const volVectorField& U, const volScalarField& muEff
+)
+{
+    const fvMesh& mesh = U.mesh();
+    tmp<volVectorField::Internal> tshear
+    (
+        new volVectorField::Internal
+        (
+            IOobject("slipTransposeShear", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedVector(dimDensity*dimVelocity/dimTime, Zero)
+        )
+    );
+    bool anySlip = false;
+    forAll(U.boundaryField(), patchi)
+    {
+        const auto* base = isA<slideBaseVelocityFvPatchVectorField>(U.boundaryField()[patchi]);
+        if (!base) continue;
+        const boolList bent(bendZone(base->patch(), slideSceneObject::New(U.db())));
+        forAll(bent, facei)
+        {
+            if (bent[facei] && slipping(base->valueFraction()[facei])) { anySlip = true; break; }
+        }
+    }
+    // grad(U) communicates across processor patches: every rank evaluates it or none.
+    if (!returnReduce(anySlip, orOp<bool>())) return tshear;
+
+    const volTensorField gradU(fvc::grad(U));
+    volVectorField::Internal& shear = tshear.ref();
+    forAll(U.boundaryField(), patchi)
+    {
+        const auto* base = isA<slideBaseVelocityFvPatchVectorField>(U.boundaryField()[patchi]);
+        if (!base) continue;
+        const vectorField flux
+        (
+            base->transposeShearFlux(gradU.boundaryField()[patchi], muEff.boundaryField()[patchi])
+        );
+        const labelUList& cells = mesh.boundary()[patchi].faceCells();
+        forAll(cells, facei)
+        {
+            shear[cells[facei]] += flux[facei]/mesh.V()[cells[facei]];
+        }
+    }
+    return tshear;
 }
 
 
