@@ -51,11 +51,13 @@ def table1_results():
                                      "setup": "H0/10, 2x2"}
     for r in load("cfd/table1.json") or []:
         if "runout" not in r:
+            out[r["case"]].setdefault("CFD", {"failed": True, "cells": 0})
             continue
         # H0/10 with H0/40 on the base where it was run; a long runout (Case 4) only on a coarser mesh, marked so.
         if "CFD" in out[r["case"]] and out[r["case"]]["CFD"]["cells"] == 10:
             continue
-        if r["cells"] == 10 or "CFD" not in out[r["case"]] or r["cells"] > out[r["case"]]["CFD"]["cells"]:
+        if r["cells"] == 10 or out[r["case"]].get("CFD", {}).get("failed", True) \
+                or r["cells"] > out[r["case"]]["CFD"]["cells"]:
             out[r["case"]]["CFD"] = {"runout": r["runout"], "atRest": r["at_rest"], "end": r["end_time"],
                                      "mechanism": "-", "wall": r["wall"], "cells": r["cells"],
                                      "history": [[t, f, math.nan] for t, f in r.get("history", [])],
@@ -67,6 +69,8 @@ def table1_results():
 def fmt_result(res, ref):
     if not res:
         return "not run", "-"
+    if res.get("failed"):
+        return "failed (`cfd/table1.md`)", "-"
     moving = "" if res["atRest"] else " (moving at %g s%s)" % (res["end"], res.get("note", ""))
     if res["atRest"] and res.get("note"):
         moving = " (%s)" % res["note"][2:]
@@ -94,7 +98,7 @@ def table1_section(results, paper):
             ref = vals.get(m)
             shown, err = fmt_result(res, ref)
             row += ["%g" % ref if ref else "-", shown, err]
-            if res and ref:
+            if res and ref and not res.get("failed"):
                 within[m][1] += 1
                 if abs(res["runout"] - ref) <= tol[m]*ref/100.0:
                     within[m][0] += 1
@@ -120,7 +124,7 @@ def table1_figure(results, paper):
             if ref:
                 ax.bar(x - w/2, ref, w, color=COLOURS[m], alpha=0.35, hatch="//", edgecolor=COLOURS[m])
             res = results[c].get(m)
-            if res:
+            if res and not res.get("failed"):
                 ax.bar(x + w/2, res["runout"], w, color=COLOURS[m])
     from matplotlib.patches import Patch
     handles = []

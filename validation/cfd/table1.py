@@ -6,7 +6,7 @@ table1.md (the paper's CFD/DAM/MPM runouts, slideFoam's per mesh, the error
 against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
-                                 [--scene-end]
+                                 [--scene-end] [--replot]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
 import json
@@ -69,9 +69,12 @@ def main():
     ap.add_argument("--scene-end", action="store_true",
                     help="run to the scene's end time (stopping at rest) instead of as long as slideDAM took: "
                          "for the strong slides, whose faces slideDAM collapses in seconds")
+    ap.add_argument("--replot", action="store_true", help="rewrite table1.md and table1.png from table1.json, "
+                    "running nothing")
     args = ap.parse_args()
     cells = [int(v) for v in args.cells.split(",")]
-    cases = [int(v) for v in args.cases.split(",")]
+    cases = [] if args.replot else [int(v) for v in args.cases.split(",")]
+    args.keep = args.keep or args.replot
     paper = paper_table()
     work = tempfile.mkdtemp(prefix="slideFoam_table1_")
     results = []
@@ -97,7 +100,8 @@ def main():
     for r in results:
         cfd = paper[r["case"]][1].get("CFD")
         if "failed" in r:
-            lines.append("| %d | H0/%d | | %s | failed | | | | | | | |" % (r["case"], r["cells"], cfd or "-"))
+            lines.append("| %d | H0/%d | | %s | failed: %s | | | | | | | |"
+                         % (r["case"], r["cells"], cfd or "-", r.get("reason", "see the run's log")))
             continue
         err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd else "-"
         mesh = "H0/%d" % r["cells"] + (" (H0/%d on the base)" % (r["cells"]*r["refinement"]) if r["refinement"] > 1

@@ -227,9 +227,12 @@ bool Foam::functionObjects::slideRunout::execute()
         if (log_) log_->write(state_.sample);
 
         // Rest: every slide cell slower than restVelocity at two successive writes.
+        // A layer smeared thinner than its cells may hold no cell of alpha >= 0.5
+        // (Table 1 Case 4 at H0/5 did, at 11 m/s): its RMS speed must be slow too.
         if (time_.timeIndex() > time_.startTimeIndex())
         {
-            slowSamples_ = uMax < scene_.control.restVelocity ? slowSamples_ + 1 : 0;
+            const scalar rmsSpeed = state_.volume > 0 ? Foam::sqrt(2*ke/(state_.volume*depth_)) : 0;
+            slowSamples_ = max(uMax, rmsSpeed) < scene_.control.restVelocity ? slowSamples_ + 1 : 0;
             atRest_ = slowSamples_ >= 2;
         }
 
