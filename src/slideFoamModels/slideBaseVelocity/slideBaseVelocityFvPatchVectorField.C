@@ -121,25 +121,6 @@ inline bool slipping(const Foam::symmTensor& valueFraction)
 {
     return Foam::tr(valueFraction) < 1.5;
 }
-
-// The base's faces within H0 of a kink of its polyline (the mesh of a
-// polyline base is laid in the scene's (x, z) plane), where a plug turns.
-Foam::boolList bendZone(const Foam::fvPatch& patch, const slide::scene::Scene& sc)
-{
-    using namespace Foam;
-    boolList zone(patch.size(), false);
-    const vectorField& centres = patch.Cf();
-    for (int k = 1; k < sc.base.nSegments(); ++k)
-    {
-        const slide::scene::Point2 kink = sc.base.point(sc.base.segmentStart(k));
-        forAll(zone, facei)
-        {
-            const scalar dx = centres[facei].x() - kink.x, dz = centres[facei].y() - kink.z;
-            if (sqr(dx) + sqr(dz) < sqr(sc.slide.height)) zone[facei] = true;
-        }
-    }
-    return zone;
-}
 }
 
 
@@ -169,6 +150,28 @@ Foam::slideBaseVelocityFvPatchVectorField::gradientBoundaryCoeffs() const
 }
 
 
+const Foam::boolList& Foam::slideBaseVelocityFvPatchVectorField::bendZone() const
+{
+    if (!bendZone_.valid())
+    {
+        const slide::scene::Scene& sc = slideSceneObject::New(db());
+        bendZone_.reset(new boolList(size(), false));
+        boolList& zone = bendZone_.ref();
+        const vectorField& centres = patch().Cf();
+        for (int k = 1; k < sc.base.nSegments(); ++k)
+        {
+            const slide::scene::Point2 kink = sc.base.point(sc.base.segmentStart(k));
+            forAll(zone, facei)
+            {
+                const scalar dx = centres[facei].x() - kink.x, dz = centres[facei].y() - kink.z;
+                if (sqr(dx) + sqr(dz) < sqr(sc.slide.height)) zone[facei] = true;
+            }
+        }
+    }
+    return *bendZone_;
+}
+
+
 Foam::tmp<Foam::vectorField> Foam::slideBaseVelocityFvPatchVectorField::transposeShearFlux
 (
     const tensorField& gradUf, const scalarField& muf
@@ -178,7 +181,7 @@ Foam::tmp<Foam::vectorField> Foam::slideBaseVelocityFvPatchVectorField::transpos
     vectorField& flux = tflux.ref();
     const vectorField& Sf = patch().Sf();
     const vectorField n(patch().nf());
-    const boolList bent(bendZone(patch(), slideSceneObject::New(db())));
+    const boolList& bent = bendZone();
     forAll(flux, facei)
     {
         if (!bent[facei] || !slipping(valueFraction()[facei])) continue;
@@ -209,7 +212,7 @@ Foam::tmp<Foam::volVectorField::Internal> Foam::slideBaseVelocityFvPatchVectorFi
     {
         const auto* base = isA<slideBaseVelocityFvPatchVectorField>(U.boundaryField()[patchi]);
         if (!base) continue;
-        const boolList bent(bendZone(base->patch(), slideSceneObject::New(U.db())));
+        const boolList& bent = base->bendZone();
         forAll(bent, facei)
         {
             if (bent[facei] && slipping(base->valueFraction()[facei])) { anySlip = true; break; }
