@@ -278,6 +278,9 @@ add("mpm-split-length-zero", "particles split at zero length (every check would 
 add("cfd-end-after-scene", "slideFoam's end time (10 s) after the scene's (4.1 s)", "system/cfdDict",
     cfd0[:-1] + ["endTime         10;", ""], len(cfd0), "endTime", "slideFoamCase")
 
+add("cfd-ahead-height-above", "a mesh higher ahead of the slide (2 H0) than over it (1.3 H0)", "system/cfdDict",
+    cfd0[:-1] + ["aheadHeightRatio 2;", ""], len(cfd0), "aheadHeightRatio", "slideFoamCase")
+
 add("mpm-band-negative", "a negative shear band thickness", "system/mpmDict",
     mpm0[:-1] + ["shearBandThickness -0.01;", ""], len(mpm0), "shearBandThickness", "slideMPM")
 

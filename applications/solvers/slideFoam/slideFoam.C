@@ -212,6 +212,14 @@ int main(int argc, char *argv[])
                 << " reach in system/cfdDict and regenerate the case (slideFoamCase)."
                 << exit(FatalError);
         }
+        if (runout.state().topAlpha >= 0.1)
+        {
+            FatalErrorInFunction
+                << "slide material (alpha " << runout.state().topAlpha << ") reached the open top of the mesh at "
+                << runout.state().topPoint << " at time " << runTime.timeName() << " s. Give a larger"
+                << " heightRatio (or aheadHeightRatio, ahead of the slide) in system/cfdDict and regenerate"
+                << " the case (slideFoamCase)." << exit(FatalError);
+        }
         if (scene.control.stopAtRest && runout.atRest())
         {
             Info<< "The slide is at rest (every slide cell slower than "

@@ -10,7 +10,7 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling", "plugCreepRate", "processors", "endTime"});
+                      "aheadHeightRatio", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling", "plugCreepRate", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
     c.cellsPerHeight = c.setting == "reference" ? 60 : 20;
@@ -33,6 +33,12 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     if (d.found("heightRatio"))
     {
         c.heightRatio = d.getScalarInRange("heightRatio", 1.05, 100.0, true, true, "mesh height / H0");
+    }
+    c.aheadHeightRatio = c.heightRatio;
+    if (d.found("aheadHeightRatio"))
+    {
+        c.aheadHeightRatio = d.getScalarInRange("aheadHeightRatio", 0.2, c.heightRatio, true, true,
+                                                "mesh height / H0 ahead of the slide (at most heightRatio)");
     }
     if (d.found("baseRefinement"))
     {
@@ -72,6 +78,8 @@ std::string CfdControls::describe() const
     std::ostringstream os;
     os << "setting " << setting << ", H0/" << cellsPerHeight;
     if (baseRefinement > 1) os << " (H0/" << cellsPerHeight*baseRefinement << " on the base)";
+    os << ", height " << heightRatio << " H0";
+    if (aheadHeightRatio < heightRatio) os << " (" << aheadHeightRatio << " H0 from H0 ahead of the slide on)";
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << ", processors " << processors;
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";

@@ -31,9 +31,10 @@ MeshLayout MeshLayout::build(const scene::Scene& sc, const CfdControls& c, const
     const int nBehind = int(std::ceil(behind/dx - 1e-9));
     const int nSlide = int(std::ceil(sc.slide.length/dx - 1e-9));
     const int nAhead = int(std::ceil(reach/dx - 1e-9));
-    m.x_ = {sRear - nBehind*dx, sRear + (nSlide + nAhead)*dx};
+    const double s0 = sRear - nBehind*dx, s1 = sRear + (nSlide + nAhead)*dx;
     m.nx_ = nBehind + nSlide + nAhead;
-    const double wanted = c.heightRatio*H0;
+
+    m.levels_ = {0.0};
     if (c.baseRefinement > 1)
     {
         // n graded cells from dx/r to dx at a ratio q = r^(1/(n-1)) <= baseGrowth.
@@ -42,39 +43,74 @@ MeshLayout MeshLayout::build(const scene::Scene& sc, const CfdControls& c, const
         const double q = std::pow(r, 1.0/(m.nGraded_ - 1));
         m.gradedHeight_ = dx/r*(std::pow(q, m.nGraded_) - 1.0)/(q - 1.0);
         m.refinement_ = r;
+        m.levels_.push_back(m.gradedHeight_);
+        m.rows_.push_back(m.nGraded_);
     }
-    const int nUniform = std::max(1, int(std::ceil((wanted - m.gradedHeight_)/dx - 1e-9)));
-    m.ny_ = m.nGraded_ + nUniform;
-    m.height_ = m.gradedHeight_ + nUniform*dx;
+    auto uniformRows = [&](double height) { return std::max(1, int(std::ceil((height - m.gradedHeight_)/dx - 1e-9))); };
+    const int nUniform = uniformRows(c.heightRatio*H0);
+    const int nLower = uniformRows(c.aheadHeightRatio*H0);
+    // The lower top starts H0 ahead of the initial front, on a cell face.
+    const int nStepAhead = std::min(nAhead, c.cellsPerHeight);
+    const bool lowerTop = nLower < nUniform && nStepAhead < nAhead;
+    const double sStep = sRear + (nSlide + nStepAhead)*dx;
+    if (lowerTop)
+    {
+        m.levels_.push_back(m.gradedHeight_ + nLower*dx);
+        m.rows_.push_back(nLower);
+    }
+    m.levels_.push_back(m.gradedHeight_ + nUniform*dx);
+    m.rows_.push_back(lowerTop ? nUniform - nLower : nUniform);
+    const int nLayers = static_cast<int>(m.rows_.size());
+
+    // Vertex columns along the base: its ends, the polyline's kinks and the lower top's start.
+    std::vector<double> s = {s0};
     if (!sc.base.isPlanar())
     {
-        // Vertex columns at the mesh's ends and at the kinks between them; each
-        // stretch gets whole cells of about dx along the base.
-        m.polyline_ = true;
-        const double s0 = m.x_[0], s1 = m.x_[1];
-        std::vector<double> s = {s0};
         for (int k = 1; k < sc.base.nSegments(); ++k)
         {
             const double kink = sc.base.segmentStart(k);
             if (kink > s0 + 0.5*dx && kink < s1 - 0.5*dx) s.push_back(kink);
         }
-        s.push_back(s1);
-        m.x_.clear();
-        m.nx_ = 0;
-        double steepest = 0.0;
-        for (std::size_t k = 0; k < s.size(); ++k)
+    }
+    if (lowerTop)
+    {
+        // A kink within half a cell of the step takes its place.
+        bool near = false;
+        for (double v : s) near = near || std::fabs(v - sStep) < 0.5*dx;
+        if (!near) s.push_back(sStep);
+        std::sort(s.begin(), s.end());
+    }
+    s.push_back(s1);
+
+    m.polyline_ = !sc.base.isPlanar();
+    double steepest = 0.0;
+    for (std::size_t k = 0; k < s.size(); ++k)
+    {
+        if (m.polyline_)
         {
             const scene::Point2 p = sc.base.point(s[k]);
             m.x_.push_back(p.x);
             m.yBase_.push_back(p.z);
-            if (k + 1 < s.size())
-            {
-                const int n = std::max(1, int(std::lround((s[k + 1] - s[k])/dx)));
-                m.nSegment_.push_back(n);
-                m.nx_ += n;
-                steepest = std::max(steepest, std::fabs(sc.base.angle(0.5*(s[k] + s[k + 1]))));
-            }
         }
+        else
+        {
+            // Planar: x along the base from arc length 0, y normal to it.
+            m.x_.push_back(s[k]);
+            m.yBase_.push_back(0.0);
+        }
+        if (k + 1 < s.size())
+        {
+            const int n = m.polyline_ ? std::max(1, int(std::lround((s[k + 1] - s[k])/dx)))
+                                      : int(std::lround((s[k + 1] - s[k])/dx));
+            m.nSegment_.push_back(n);
+            m.nLayersOver_.push_back(lowerTop && s[k] >= sStep - 0.5*dx ? nLayers - 1 : nLayers);
+            if (m.polyline_) steepest = std::max(steepest, std::fabs(sc.base.angle(0.5*(s[k] + s[k + 1]))));
+        }
+    }
+    if (m.polyline_)
+    {
+        m.nx_ = 0;
+        for (int n : m.nSegment_) m.nx_ += n;
         m.verticalScale_ = 1.0/std::cos(steepest);
     }
     return m;
@@ -82,97 +118,43 @@ MeshLayout MeshLayout::build(const scene::Scene& sc, const CfdControls& c, const
 
 long long MeshLayout::nCells() const
 {
-    return static_cast<long long>(nx_)*ny_;
+    long long n = 0;
+    for (std::size_t k = 0; k < nSegment_.size(); ++k)
+    {
+        for (int l = 0; l < nLayersOver_[k]; ++l) n += static_cast<long long>(nSegment_[k])*rows_[l];
+    }
+    return n;
 }
 
 std::string MeshLayout::describe() const
 {
     std::ostringstream os;
-    os << nx_ << " x " << ny_ << " = " << nCells() << " cells of " << depth_ << " m";
+    int ny = 0;
+    for (int r : rows_) ny += r;
+    os << nCells() << " cells of " << depth_ << " m, " << nx_ << " along the base, up to " << ny << " across";
     if (nGraded_ > 0)
     {
         os << " (" << nGraded_ << " graded rows from " << depth_/refinement_ << " m on the base up to "
            << gradedHeight_ << " m)";
     }
+    const double height = levels_.back();
     if (polyline_)
     {
         os << ", vertical columns over " << nSegment_.size() << " stretches of the polyline, x in [" << x_.front()
-           << ", " << x_.back() << "] m, " << height_*verticalScale_ << " m high (vertically)";
+           << ", " << x_.back() << "] m, " << height*verticalScale_ << " m high (vertically)";
     }
     else
     {
-        os << ", x in [" << x_[0] << ", " << x_[1] << "] m along the base, height " << height_ << " m";
+        os << ", x in [" << x_.front() << ", " << x_.back() << "] m along the base, height " << height << " m";
     }
-    return os.str();
-}
-
-std::vector<double> MeshLayout::layerLevels() const
-{
-    std::vector<double> levels = {0.0};
-    if (nGraded_ > 0) levels.push_back(gradedHeight_);
-    levels.push_back(height_);
-    return levels;
-}
-
-int MeshLayout::layerRows(const int layer) const
-{
-    return nGraded_ > 0 && layer == 0 ? nGraded_ : ny_ - nGraded_;
-}
-
-std::string MeshLayout::blockMeshDict(const std::string& rearType) const
-{
-    if (polyline_) return polylineBlockMeshDict(rearType);
-    // Vertices by level (bottom up), four per level: (x0, y, 0) (x1, y, 0) (x1, y, d) (x0, y, d).
-    const std::vector<double> levels = layerLevels();
-    std::ostringstream os;
-    os << "scale 1;\n\nvertices\n(\n";
-    for (double y : levels)
+    for (std::size_t k = 0; k < nSegment_.size(); ++k)
     {
-        os << "    (" << num(x_[0]) << " " << num(y) << " 0) (" << num(x_[1]) << " " << num(y) << " 0) ("
-           << num(x_[1]) << " " << num(y) << " " << num(depth_) << ") (" << num(x_[0]) << " " << num(y) << " "
-           << num(depth_) << ")\n";
+        if (nLayersOver_[k] < static_cast<int>(rows_.size()))
+        {
+            os << ", " << levels_[nLayersOver_[k]] << " m high from x = " << x_[k] << " m on";
+            break;
+        }
     }
-    // Block k spans levels k and k+1; hex order: bottom face (0 1 top-1 top-0), then its far copy.
-    auto v = [](int level, int k) { return 4*level + k; };
-    auto hex = [&](int l)
-    {
-        std::ostringstream h;
-        h << "hex (" << v(l, 0) << " " << v(l, 1) << " " << v(l + 1, 1) << " " << v(l + 1, 0) << " " << v(l, 3)
-          << " " << v(l, 2) << " " << v(l + 1, 2) << " " << v(l + 1, 3) << ")";
-        return h.str();
-    };
-    auto face = [&](int l, int a, int b) // a side face of block l between vertex columns a and b
-    {
-        std::ostringstream f;
-        f << "(" << v(l, a) << " " << v(l, b) << " " << v(l + 1, b) << " " << v(l + 1, a) << ")";
-        return f.str();
-    };
-    const int nBlocks = int(levels.size()) - 1;
-    os << ");\n\nblocks\n(\n";
-    for (int l = 0; l < nBlocks; ++l)
-    {
-        const bool graded = nGraded_ > 0 && l == 0;
-        os << "    " << hex(l) << " (" << nx_ << " " << layerRows(l) << " 1) simpleGrading (1 "
-           << num(graded ? refinement_ : 1.0) << " 1)\n";
-    }
-    std::string up, down, sides;
-    for (int l = 0; l < nBlocks; ++l)
-    {
-        up += " " + face(l, 0, 3);
-        down += " " + face(l, 1, 2);
-        sides += " (" + std::to_string(v(l, 0)) + " " + std::to_string(v(l + 1, 0)) + " " + std::to_string(v(l + 1, 1))
-                 + " " + std::to_string(v(l, 1)) + ") (" + std::to_string(v(l, 3)) + " " + std::to_string(v(l, 2))
-                 + " " + std::to_string(v(l + 1, 2)) + " " + std::to_string(v(l + 1, 3)) + ")";
-    }
-    const int t = nBlocks;
-    os << ");\n\nedges\n(\n);\n\nboundary\n(\n"
-       << "    base\n    {\n        type wall;\n        faces ((0 1 2 3));\n    }\n"
-       << "    top\n    {\n        type patch;\n        faces ((" << v(t, 0) << " " << v(t, 3) << " " << v(t, 2) << " "
-       << v(t, 1) << "));\n    }\n"
-       << "    upslope\n    {\n        type " << rearType << ";\n        faces (" << up << " );\n    }\n"
-       << "    downslope\n    {\n        type patch;\n        faces (" << down << " );\n    }\n"
-       << "    frontAndBack\n    {\n        type empty;\n        faces (" << sides << " );\n    }\n"
-       << ");\n";
     return os.str();
 }
 
@@ -187,10 +169,10 @@ std::vector<double> MeshLayout::cellCentreHeights() const
         y.push_back(bottom + 0.5*h);
         bottom += h;
     }
-    const double h = (height_ - gradedHeight_)/(ny_ - nGraded_);
-    for (int j = nGraded_; j < ny_; ++j)
+    for (std::size_t l = nGraded_ > 0 ? 1 : 0; l < rows_.size(); ++l)
     {
-        y.push_back(gradedHeight_ + (j - nGraded_ + 0.5)*h);
+        const double h = (levels_[l + 1] - levels_[l])/rows_[l];
+        for (int j = 0; j < rows_[l]; ++j) y.push_back(levels_[l] + (j + 0.5)*h);
     }
     return y;
 }
@@ -201,14 +183,14 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
     std::vector<double> alpha;
     alpha.reserve(static_cast<std::size_t>(nCells()));
     const std::vector<double> heights = cellCentreHeights();
-    const int nStretches = polyline_ ? static_cast<int>(nSegment_.size()) : 1;
-    const int nLayers = static_cast<int>(layerLevels().size()) - 1;
-    for (int l = 0, j0 = 0; l < nLayers; j0 += layerRows(l), ++l)
+    const int nLayers = static_cast<int>(rows_.size());
+    for (int l = 0, j0 = 0; l < nLayers; j0 += rows_[l], ++l)
     {
-        for (int k = 0; k < nStretches; ++k)
+        for (std::size_t k = 0; k < nSegment_.size(); ++k)
         {
-            const int n = polyline_ ? nSegment_[k] : nx_;
-            for (int j = j0; j < j0 + layerRows(l); ++j)
+            if (l >= nLayersOver_[k]) continue;
+            const int n = nSegment_[k];
+            for (int j = j0; j < j0 + rows_[l]; ++j)
             {
                 for (int i = 0; i < n; ++i)
                 {
@@ -228,15 +210,17 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
     return alpha;
 }
 
-std::string MeshLayout::polylineBlockMeshDict(const std::string& rearType) const
+std::string MeshLayout::blockMeshDict(const std::string& rearType) const
 {
-    const std::vector<double> levels = layerLevels();
     const int nCol = static_cast<int>(x_.size());
-    // Vertex (level, column, side): side 0 at z = 0, 1 at z = depth.
+    const int nStretch = nCol - 1;
+    const int nLayers = static_cast<int>(rows_.size());
+    // Vertex (level, column, side): side 0 at z = 0, 1 at z = depth. Every level
+    // has every column; blockMesh ignores the ones no block uses (above a lower top).
     auto v = [&](int l, int k, int side) { return std::to_string(2*(l*nCol + k) + side); };
     std::ostringstream os;
     os << "scale 1;\n\nvertices\n(\n";
-    for (double h : levels)
+    for (double h : levels_)
     {
         for (int k = 0; k < nCol; ++k)
         {
@@ -245,40 +229,43 @@ std::string MeshLayout::polylineBlockMeshDict(const std::string& rearType) const
                << num(depth_) << ")\n";
         }
     }
-    const int nLayers = int(levels.size()) - 1;
     os << ");\n\nblocks\n(\n";
     for (int l = 0; l < nLayers; ++l)
     {
         const bool graded = nGraded_ > 0 && l == 0;
-        for (int k = 0; k + 1 < nCol; ++k)
+        for (int k = 0; k < nStretch; ++k)
         {
+            if (l >= nLayersOver_[k]) continue;
             os << "    hex (" << v(l, k, 0) << " " << v(l, k + 1, 0) << " " << v(l + 1, k + 1, 0) << " "
                << v(l + 1, k, 0) << " " << v(l, k, 1) << " " << v(l, k + 1, 1) << " " << v(l + 1, k + 1, 1) << " "
-               << v(l + 1, k, 1) << ") (" << nSegment_[k] << " " << layerRows(l)
+               << v(l + 1, k, 1) << ") (" << nSegment_[k] << " " << rows_[l]
                << " 1) simpleGrading (1 " << num(graded ? refinement_ : 1.0) << " 1)\n";
         }
     }
+    // A side face between levels la and lb at column ka/kb, outward by argument order.
     auto face = [&](int la, int ka, int lb, int kb)
     {
         return " (" + v(la, ka, 0) + " " + v(la, ka, 1) + " " + v(lb, kb, 1) + " " + v(lb, kb, 0) + ")";
     };
     std::string base, top, up, down, sides;
-    for (int k = 0; k + 1 < nCol; ++k)
+    for (int k = 0; k < nStretch; ++k)
     {
         base += face(0, k, 0, k + 1);
-        top += face(nLayers, k + 1, nLayers, k);
-        for (int l = 0; l < nLayers; ++l)
+        top += face(nLayersOver_[k], k + 1, nLayersOver_[k], k);
+        for (int l = 0; l < nLayersOver_[k]; ++l)
         {
             sides += " (" + v(l, k, 0) + " " + v(l + 1, k, 0) + " " + v(l + 1, k + 1, 0) + " " + v(l, k + 1, 0)
                      + ") (" + v(l, k, 1) + " " + v(l, k + 1, 1) + " " + v(l + 1, k + 1, 1) + " " + v(l + 1, k, 1)
                      + ")";
         }
+        // The step down to a lower top is open to the ambient like the top.
+        if (k + 1 < nStretch)
+        {
+            for (int l = nLayersOver_[k + 1]; l < nLayersOver_[k]; ++l) top += face(l, k + 1, l + 1, k + 1);
+        }
     }
-    for (int l = 0; l < nLayers; ++l)
-    {
-        up += face(l + 1, 0, l, 0);
-        down += face(l, nCol - 1, l + 1, nCol - 1);
-    }
+    for (int l = 0; l < nLayersOver_.front(); ++l) up += face(l + 1, 0, l, 0);
+    for (int l = 0; l < nLayersOver_.back(); ++l) down += face(l, nCol - 1, l + 1, nCol - 1);
     os << ");\n\nedges\n(\n);\n\nboundary\n(\n"
        << "    base\n    {\n        type wall;\n        faces (" << base << " );\n    }\n"
        << "    top\n    {\n        type patch;\n        faces (" << top << " );\n    }\n"

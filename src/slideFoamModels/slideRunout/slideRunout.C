@@ -209,6 +209,32 @@ bool Foam::functionObjects::slideRunout::execute()
     // Slide on the base in the last column is leaving through the open downslope
     // end, whether or not the (thin) front there still reaches alpha = 0.5.
     s.atDomainEnd = nCol > 0 && baseAlpha[nCol - 1] >= 0.1;
+    // Slide at the open top (a mesh too low over it) would leave there or be pressed down.
+    const label topi = mesh_.boundaryMesh().findPatchID("top");
+    if (topi >= 0)
+    {
+        const labelUList& topCells = mesh_.boundary()[topi].faceCells();
+        forAll(topCells, facei)
+        {
+            if (alpha[topCells[facei]] > s.topAlpha)
+            {
+                s.topAlpha = alpha[topCells[facei]];
+                s.topPoint = mesh_.C()[topCells[facei]];
+            }
+        }
+    }
+    {
+        // The largest over the ranks, with its place.
+        List<scalar> a(Pstream::nProcs(), Zero);
+        List<point> p(Pstream::nProcs(), Zero);
+        a[Pstream::myProcNo()] = s.topAlpha;
+        p[Pstream::myProcNo()] = s.topPoint;
+        Pstream::gatherList(a);
+        Pstream::scatterList(a);
+        Pstream::gatherList(p);
+        Pstream::scatterList(p);
+        forAll(a, i) if (a[i] > s.topAlpha || (a[i] == s.topAlpha && i < Pstream::myProcNo())) { s.topAlpha = a[i]; s.topPoint = p[i]; }
+    }
     scalar hMax = 0;
     forAll(colAV, c) hMax = max(hMax, colAV[c]/columnArea_[c]);
     s.sample.maxVelocity = uMax;

@@ -6,7 +6,9 @@ generated from SlideFoam scenes by slideFoamCase:
               interFoam with its HerschelBulkley model (same cap) field for field,
               without and with the rate effect
   flume       Krone-Wright Run 15 at H0/10 to 4.1 s: front against the lubrication
-              solution, slide volume, alpha bounds, xi bounds, rear at the wall
+              solution, slide volume, alpha bounds, xi bounds, rear at the wall; the
+              same with the mesh's top lowered ahead of the gate (the tutorial's
+              aheadHeightRatio) agrees, and a top too low stops with an error
   base        the base condition: a frictional base that never reaches s_b is the
               no-slip base to round-off; s_b = 0, s_b 20 Pa, hydroplaning and no-slip
               order the runout as they must; volume conserved with each
@@ -122,6 +124,29 @@ def test_flume(work):
     check(float(np.max(xi[alpha < 1e-3])) == 0.0 if np.any(alpha < 1e-3) else True, "no xi in the ambient phase")
     check(abs(r["rear"][-1] + 1.8) < 1e-9, "rear stays at the end wall (%.4f m)" % r["rear"][-1])
     check(bool(np.all(np.diff(r["front"]) >= -1e-3)), "front never retreats")
+
+    # The tutorial's lower top ahead of the gate: fewer cells, the same flow.
+    low = make_case(FLUME, work, "flumeLowTop", control={"endTime": 4.1, "writeInterval": 0.1},
+                    cfd={"cellsPerHeight": 10, "reach": 5, "heightRatio": 1.3, "aheadHeightRatio": 0.75})
+    prepare(low)
+    run_slidefoam(low)
+    sl = summary(low)
+    check(sl["problem_size"] < 0.7*s["problem_size"], "lower top: %d cells against %d" % (sl["problem_size"],
+                                                                                      s["problem_size"]))
+    check(abs(sl["final_length_m"]/length - 1) < 0.01, "lower top: front %.4f m against %.4f m (within 1 %%)"
+          % (sl["final_length_m"], length))
+    check(abs(sl["volume_relative_change"]) < 0.005, "lower top: volume change %.2e" % sl["volume_relative_change"])
+
+    # A top too low for the slurry: a clear error, no summary.
+    cut = make_case(FLUME, work, "flumeTopTooLow", control={"endTime": 2, "writeInterval": 0.1},
+                    cfd={"cellsPerHeight": 10, "reach": 5, "heightRatio": 1.3, "aheadHeightRatio": 0.2})
+    prepare(cut)
+    rc = run(cut, which("slideFoam"), check=False)
+    log = open(os.path.join(cut, "log.slideFoam")).read()
+    check(rc != 0 and "reached the open top of the mesh" in log and "aheadHeightRatio" in log,
+          "slide at the top: exit %d, error names the top and aheadHeightRatio" % rc)
+    check(not os.path.exists(os.path.join(cut, "postProcessing", "slideFoam", "summary.json")),
+          "slide at the top: no summary.json written")
 
 
 def base_case(work, name, interface, s_uo=None):
