@@ -8,7 +8,7 @@ slideDAM and slideMPM on the same scene, serial against 2 MPI ranks.
 Writes flume.md and flume.png beside this script.
 
 Usage: validation/cfd/flume.py [--meshes 10,20,30,60] [--parallel 60] [--serial-vs-parallel 30]
-(after ./Allwmake; H0/60 takes about 15-25 minutes on 2 cores)"""
+(after ./Allwmake; H0/60 takes about 12 minutes on 2 ranks, the whole study about 25)"""
 import argparse
 import os
 import sys
