@@ -212,7 +212,7 @@ int main(int argc, char *argv[])
                 << " reach in system/cfdDict and regenerate the case (slideFoamCase)."
                 << exit(FatalError);
         }
-        if (runout.state().topAlpha >= 0.1)
+        if (runout.state().atTop)
         {
             FatalErrorInFunction
                 << "slide material (alpha " << runout.state().topAlpha << ") reached the open top of the mesh at "

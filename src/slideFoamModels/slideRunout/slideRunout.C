@@ -223,17 +223,15 @@ bool Foam::functionObjects::slideRunout::execute()
             }
         }
     }
+    const scalar localTopAlpha = s.topAlpha;
+    reduce(s.topAlpha, maxOp<scalar>());
+    s.atTop = s.topAlpha >= 0.1;
+    if (s.atTop)
     {
-        // The largest over the ranks, with its place.
-        List<scalar> a(Pstream::nProcs(), Zero);
-        List<point> p(Pstream::nProcs(), Zero);
-        a[Pstream::myProcNo()] = s.topAlpha;
-        p[Pstream::myProcNo()] = s.topPoint;
-        Pstream::gatherList(a);
-        Pstream::scatterList(a);
-        Pstream::gatherList(p);
-        Pstream::scatterList(p);
-        forAll(a, i) if (a[i] > s.topAlpha || (a[i] == s.topAlpha && i < Pstream::myProcNo())) { s.topAlpha = a[i]; s.topPoint = p[i]; }
+        // Only on the way to stopping: the place, from the rank that holds it.
+        point p = localTopAlpha == s.topAlpha ? s.topPoint : point::max;
+        reduce(p, minOp<point>());
+        s.topPoint = p;
     }
     scalar hMax = 0;
     forAll(colAV, c) hMax = max(hMax, colAV[c]/columnArea_[c]);
