@@ -12,6 +12,7 @@ import argparse
 import json
 import math
 import os
+import re
 import sys
 import tempfile
 
@@ -22,6 +23,12 @@ from cfdcase import make_case, prepare, run, run_slidefoam, set_entry  # noqa: E
 from paper import paper_table  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import read_summary, read_runout  # noqa: E402
+
+
+def fatal_error(log):
+    """The first FOAM FATAL ERROR's message in a solver log (one line; its rank prefix dropped), or None."""
+    m = re.search(r"FOAM FATAL ERROR:\s*\n(?:\[\d+\] )?(.+)", log)
+    return m.group(1).strip() if m else None
 
 
 def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None, retries=2, ahead_height=None):
@@ -51,7 +58,7 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
             print("Case %d H0/%d: the front left the mesh at %.1f m; rerunning with reach %.1f m"
                   % (c, cells, front, 3.0*front), flush=True)
             return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1, ahead_height)
-        return {"case": c, "cells": cells, "failed": str(e)[-600:]}
+        return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "ahead_height": ahead_height}
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
@@ -108,7 +115,7 @@ def main():
         cfd = paper[r["case"]][1].get("CFD")
         if "failed" in r:
             lines.append("| %d | H0/%d | | %s | failed: %s | | | | | | | |"
-                         % (r["case"], r["cells"], cfd or "-", r.get("reason", "see the run's log")))
+                         % (r["case"], r["cells"], cfd or "-", r.get("reason") or "see the run's log"))
             continue
         err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd else "-"
         mesh = "H0/%d" % r["cells"] + (" (H0/%d on the base)" % (r["cells"]*r["refinement"]) if r["refinement"] > 1

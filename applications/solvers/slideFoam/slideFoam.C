@@ -215,8 +215,10 @@ int main(int argc, char *argv[])
         if (runout.state().atTop)
         {
             FatalErrorInFunction
-                << "slide material (alpha " << runout.state().topAlpha << ") reached the open top of the mesh at "
-                << runout.state().topPoint << " at time " << runTime.timeName() << " s. Give a larger"
+                << "slide material reached the open top of the mesh at time " << runTime.timeName()
+                << " s: alpha up to " << runout.state().topAlpha << " there (at " << runout.state().topPoint
+                << "), " << runout.state().topOutflow << " m2 of slide out through it ("
+                << 100*runout.state().topOutflow/max(runout.initialVolume(), SMALL) << " % of the slide). Give a larger"
                 << " heightRatio (or aheadHeightRatio, ahead of the slide) in system/cfdDict and regenerate"
                 << " the case (slideFoamCase)." << exit(FatalError);
         }
