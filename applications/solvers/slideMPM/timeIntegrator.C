@@ -578,7 +578,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
             dil = avg(i, j, 0);   // the cell's mean
         }
         double xip = xi(p), sup, gdot;
-        const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot);
+        const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot, record);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         xi(p) = xip;
         if (record)   // three stores a step fewer: 7 % of the memory traffic

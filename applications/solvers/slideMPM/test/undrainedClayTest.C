@@ -152,3 +152,30 @@ TEST(UndrainedClay, RigidRotationLeavesTheStressInvariants)
     EXPECT_NEAR(sig[0] + sig[1], tr0, 1e-9*std::fabs(tr0));
     EXPECT_EQ(rate, 0.0);
 }
+
+TEST(UndrainedClay, StrainRateLeftOutChangesNothingElse)
+{
+    // The time integrator skips the shear strain rate on steps whose state is not
+    // written: stress, xi and s_u must be the same bits either way, through the
+    // elastic range, yield, rate hardening and remoulding.
+    const UndrainedClay c = UndrainedClay::fromYoungs(material(0.45, 0.23, 0.3, 10.0), 1e5, 0.49);
+    const double L[4] = {0.02, 1.5, -0.3, -0.02};
+    double a[4] = {0, 0, 0, 0}, b[4] = {0, 0, 0, 0}, xa = 0.0, xb = 0.0;
+    double suA = 0.0, suB = 0.0, rateA = 0.0, rateB = -1.0;
+    int plasticSteps = 0;
+    for (int k = 0; k < 2000; ++k)
+    {
+        const double dXiA = c.update(L, L[0] + L[3], 1e-3, a, xa, suA, rateA, true);
+        const double dXiB = c.update(L, L[0] + L[3], 1e-3, b, xb, suB, rateB, false);
+        ASSERT_EQ(dXiA, dXiB) << "step " << k;
+        plasticSteps += dXiA > 0.0;
+        for (int i = 0; i < 4; ++i) ASSERT_EQ(a[i], b[i]) << "step " << k << ", component " << i;
+        ASSERT_EQ(xa, xb);
+        ASSERT_EQ(suA, suB);
+        ASSERT_EQ(rateB, 0.0);
+    }
+    EXPECT_GT(rateA, 1.0);                 // the rate was computed where asked for
+    EXPECT_GT(plasticSteps, 1000);         // the loading went well past yield
+    EXPECT_GT(xa, 1.0);                    // and remoulded: below the intact strength at its rate
+    EXPECT_LT(suA, 0.9*c.strength.s_uo*c.strength.rateFactor(rateA));
+}
