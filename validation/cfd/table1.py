@@ -58,7 +58,8 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
             print("Case %d H0/%d: the front left the mesh at %.1f m; rerunning with reach %.1f m"
                   % (c, cells, front, 3.0*front), flush=True)
             return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1, ahead_height)
-        return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "ahead_height": ahead_height}
+        return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "refinement": refinement,
+                "ahead_height": ahead_height}
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
@@ -113,15 +114,15 @@ def main():
              "[m/s] | volume change | slideDAM [m] | wall [s] |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         cfd = paper[r["case"]][1].get("CFD")
-        if "failed" in r:
-            lines.append("| %d | H0/%d | | %s | failed: %s | | | | | | | |"
-                         % (r["case"], r["cells"], cfd or "-", r.get("reason") or "see the run's log"))
-            continue
-        err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd else "-"
         mesh = "H0/%d" % r["cells"] + (" (H0/%d on the base)" % (r["cells"]*r["refinement"]) if r["refinement"] > 1
                                        else "")
         if r.get("ahead_height"):
             mesh += ", %g H0 high ahead" % r["ahead_height"]
+        if "failed" in r:
+            lines.append("| %d | %s | | %s | failed: %s | | | | | | | |"
+                         % (r["case"], mesh, cfd or "-", r.get("reason") or "see the run's log"))
+            continue
+        err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd else "-"
         lines.append("| %d | %s | %d | %s | %.1f | %s | %s | %.0f | %.2g | %.1e | %.1f | %.0f |"
                      % (r["case"], mesh, r["n"], cfd or "-", r["runout"], err, "yes" if r["at_rest"] else "no",
                         r["end_time"], r["front_velocity"], r["volume_change"], r["dam_runout"], r["wall"]))
