@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iomanip>
 #include <map>
+#include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace slide
@@ -33,12 +37,14 @@ HostPoints::HostPoints(const MaterialPoints& mp)
     velocity(snapshot(mp.velocity)),
     size(snapshot(mp.size)),
     stress(snapshot(mp.stress)),
+    affine(snapshot(mp.affine)),
     mass(snapshot(mp.mass)),
     volume(snapshot(mp.volume)),
     xi(snapshot(mp.plasticShearStrain)),
     strength(snapshot(mp.strength)),
     shearStrainRate(snapshot(mp.shearStrainRate)),
-    plasticShearStrainRate(snapshot(mp.plasticShearStrainRate))
+    plasticShearStrainRate(snapshot(mp.plasticShearStrainRate)),
+    plasticWork(snapshot(mp.plasticWork))
 {}
 
 double HostPoints::frontX() const
@@ -97,7 +103,7 @@ output::PolyData particleData(const HostPoints& hp, const BaseFrame& frame,
     pd.cells = output::PolyData::Cells::vertices;
     const int n = hp.count;
     std::vector<double> vel(3*n), sxx(n), szz(n), sxz(n), syy(n), pressure(n), tau(n), su(n), ratio(n), xi(n),
-        rate(n), plastic(n);
+        rate(n), plastic(n), mass(n), volume(n);
     const double c = std::cos(frame.angle), s = std::sin(frame.angle);
     for (int p = 0; p < n; ++p)
     {
@@ -123,6 +129,8 @@ output::PolyData particleData(const HostPoints& hp, const BaseFrame& frame,
         xi[p] = hp.xi(p);
         rate[p] = hp.shearStrainRate(p);
         plastic[p] = hp.plasticShearStrainRate(p);
+        mass[p] = hp.mass(p);
+        volume[p] = hp.volume(p);
     }
     pd.addVector("velocity", vel);
     pd.addScalar("sigma_xx", sxx);
@@ -136,6 +144,9 @@ output::PolyData particleData(const HostPoints& hp, const BaseFrame& frame,
     pd.addScalar("xi", xi);
     pd.addScalar("shearStrainRate", rate);
     pd.addScalar("plasticShearStrainRate", plastic);
+    // Per unit width: what an energy or mass budget over the particles needs (they differ after splitting).
+    pd.addScalar("mass", mass);
+    pd.addScalar("volume", volume);
     return pd;
 }
 
@@ -270,6 +281,74 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
     else if (std::fabs(V) > 0.1*std::sqrt(g*H0) && m.basalSlipRatio > 0.8) m.name = names[1];
     else m.name = names[0];
     return m;
+}
+
+EnergyState energyState(const HostPoints& hp, const BaseFrame& frame, const UndrainedClay& clay, const double cellSize)
+{
+    const double inertia = 0.25*cellSize*cellSize;
+    const double G = clay.shearModulus, K = clay.lame + 2.0*clay.shearModulus/3.0;
+    EnergyState e;
+    for (int p = 0; p < hp.count; ++p)
+    {
+        const double m = hp.mass(p);
+        e.potential -= m*(frame.gravityX*hp.position(p, 0) + frame.gravityY*hp.position(p, 1));
+        double CC = 0.0;
+        for (int c = 0; c < 4; ++c) CC += hp.affine(p, c)*hp.affine(p, c);
+        e.kinetic += 0.5*m*(hp.velocity(p, 0)*hp.velocity(p, 0) + hp.velocity(p, 1)*hp.velocity(p, 1) + inertia*CC);
+        const double sxx = hp.stress(p, 0), syy = hp.stress(p, 1), szz = hp.stress(p, 2), sxy = hp.stress(p, 3);
+        const double mean = (sxx + syy + szz)/3.0;
+        const double ss = (sxx - mean)*(sxx - mean) + (syy - mean)*(syy - mean) + (szz - mean)*(szz - mean)
+                        + 2.0*sxy*sxy;
+        e.elastic += hp.volume(p)*(ss/(4.0*G) + mean*mean/(2.0*K));
+        e.plastic += hp.plasticWork(p);
+    }
+    return e;
+}
+
+namespace
+{
+
+const char* const energyHeader =
+    "# energy budget per unit width [J/m] since t = 0: gravityWork = kinetic + elasticChange + plastic + boundary"
+    " + numerical\n"
+    "# time [s]  gravityWork  kinetic  elasticChange  plasticDissipation  boundaryWork  numericalDissipation"
+    "  numerical/gravityWork\n";
+
+} // namespace
+
+EnergyLog::EnergyLog(const std::string& caseDir, const bool append, const double startTime)
+:
+    path_(output::methodOutputDir(caseDir, "slideMPM") + "/energy.dat")
+{
+    std::vector<std::string> kept;
+    if (append)
+    {
+        std::ifstream is(path_);
+        std::string line;
+        while (std::getline(is, line))
+        {
+            if (line.empty() || line[0] == '#') continue;
+            std::istringstream ls(line);
+            double t;
+            if (ls >> t && t <= startTime*(1.0 + 1e-12) + 1e-300) kept.push_back(line);
+        }
+    }
+    os_.open(path_, std::ios::trunc);
+    if (!os_) throw std::runtime_error("cannot write " + path_);
+    os_ << energyHeader;
+    for (const std::string& line : kept) os_ << line << '\n';
+    os_.flush();
+}
+
+void EnergyLog::write(const double t, const EnergyState& now, const EnergyState& start, const double boundaryWork)
+{
+    const double gravity = start.potential - now.potential;
+    const double elastic = now.elastic - start.elastic;
+    const double plastic = now.plastic - start.plastic;
+    const double numerical = gravity - now.kinetic + start.kinetic - elastic - plastic - boundaryWork;
+    os_ << std::setprecision(10) << t << ' ' << gravity << ' ' << now.kinetic - start.kinetic << ' ' << elastic << ' ' << plastic
+        << ' ' << boundaryWork << ' ' << numerical << ' ' << (gravity > 0.0 ? numerical/gravity : 0.0) << '\n';
+    os_.flush();
 }
 
 } // namespace mpm

@@ -79,6 +79,8 @@ void writeState(const std::string& caseDir, const RestartPoint& at, const Materi
     f.add("highest", at.highest);
     f.add("stats", {at.stats.xmin, at.stats.xmax, at.stats.ymin, at.stats.ymax, at.stats.maxSpeed,
                     at.stats.kineticEnergy, at.stats.finite ? 1.0 : 0.0});
+    f.add("energy", {at.energyStart.potential, at.energyStart.kinetic, at.energyStart.elastic,
+                     at.energyStart.plastic, at.boundaryWork});
     f.add("count", static_cast<double>(mp.count));
     f.add("spacing", mp.spacing);
     mp.forEachView([&](const char* name, const auto& v) { f.add(name, flatten(v)); });
@@ -108,6 +110,13 @@ RestartPoint readState(const std::string& path, MaterialPoints& mp)
     at.stats.maxSpeed = st[4];
     at.stats.kineticEnergy = st[5];
     at.stats.finite = st[6] != 0.0;
+    const std::vector<double>& en = f.vector("energy");
+    if (en.size() != 5) throw scene::InputError(path, 0, "energy", "expected 5 values");
+    at.energyStart.potential = en[0];
+    at.energyStart.kinetic = en[1];
+    at.energyStart.elastic = en[2];
+    at.energyStart.plastic = en[3];
+    at.boundaryWork = en[4];
     return at;
 }
 

@@ -92,6 +92,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
     const auto C = mp.affine;
     const auto m = mp.mass;
     const auto V = mp.volume;
+    const auto W = mp.plasticWork;
     const auto ls = mp.size;
     Kokkos::parallel_for("splitParticles", Policy(0, n), KOKKOS_LAMBDA(const int p)
     {
@@ -104,7 +105,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
         const double hx = a == 0 ? h : 0.0, hy = a == 1 ? h : 0.0;
         const double dvx = C(p, 0)*hx + C(p, 1)*hy, dvy = C(p, 2)*hx + C(p, 3)*hy;
         const double x0 = xs(p, 0), y0 = xs(p, 1), vx0 = vel(p, 0), vy0 = vel(p, 1);
-        const double half[3] = {0.5*m(p), 0.5*V(p), 0.5*ls(p, a)};
+        const double half[4] = {0.5*m(p), 0.5*V(p), 0.5*ls(p, a), 0.5*W(p)};
         const int member[2] = {p, c};
         for (int k = 0; k < 2; ++k)
         {
@@ -121,6 +122,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
             m(q) = half[0];
             V(q) = half[1];
             ls(q, a) = half[2];
+            W(q) = half[3];
         }
     });
     return added;

@@ -105,6 +105,8 @@ int main(int argc, char** argv)
         output::MechanismHistory mechanisms;
         const double restartAt = output::restartTime(caseDir, rc, "slideMPM");
         std::unique_ptr<mpm::StepStatistics> restartStats;
+        mpm::EnergyState energyStart = mpm::energyState(mpm::HostPoints(points), frame, clay, d);
+        double boundaryWork = 0.0;
         if (restartAt > 0.0)
         {
             const std::string path = output::statePath(caseDir, restartAt, "slideMPM");
@@ -117,6 +119,8 @@ int main(int argc, char** argv)
             highest = at.highest;
             mechanisms = at.mechanisms;
             restartStats.reset(new mpm::StepStatistics(at.stats));
+            energyStart = at.energyStart;
+            boundaryWork = at.boundaryWork;
             std::cout << "Restarting from " << path << " (t = " << t << " s, step " << step << ")\n" << std::endl;
         }
 
@@ -125,6 +129,7 @@ int main(int argc, char** argv)
         output::prepareOutput(caseDir, "slideMPM");
         // A restart keeps what was written up to its start and replaces the rest.
         output::RunoutLog log(caseDir, "slideMPM", restartAt > 0.0, restartAt);
+        mpm::EnergyLog energyLog(caseDir, restartAt > 0.0, restartAt);
         std::unique_ptr<output::PvdSeries> series;
         if (controls.writeFields)
         {
@@ -139,11 +144,12 @@ int main(int argc, char** argv)
             last = mpm::runoutSample(hp, frame, t, initialFront, d);
             if (!logRow) return hp;
             log.write(last);
+            energyLog.write(t, mpm::energyState(hp, frame, clay, d), energyStart, boundaryWork);
             if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
             if (controls.writeState)
             {
                 mpm::writeState(caseDir, {{t, step, schedule.origin(), schedule.index(), mechanisms}, initialFront,
-                                          initialMass, highest, stats}, points);
+                                          initialMass, highest, stats, energyStart, boundaryWork}, points);
             }
             return hp;
         };
@@ -192,6 +198,7 @@ int main(int argc, char** argv)
             const mpm::StepStatistics next = integrator.step(points, grid, s.dt, recorded);
             ++step;
             t = s.time;
+            boundaryWork += next.boundaryWork;
             particleUpdates += points.count;
 
             // Runaway: faster than a fall from the highest start point to the lowest
@@ -273,6 +280,18 @@ int main(int argc, char** argv)
         summary.addNumber("final_length_m", last.front - last.rear);
         summary.addNumber("max_thickness_m", last.maxThickness);
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
+        {
+            // The energy budget at the end (energy.dat has its history): where gravity's work went.
+            const mpm::EnergyState now = mpm::energyState(hp, frame, clay, d);
+            const double gravityWork = energyStart.potential - now.potential;
+            const double plastic = now.plastic - energyStart.plastic;
+            const double numerical = gravityWork - (now.kinetic - energyStart.kinetic)
+                                   - (now.elastic - energyStart.elastic) - plastic - boundaryWork;
+            summary.addNumber("gravity_work_J_per_m", gravityWork);
+            summary.addNumber("plastic_dissipation_fraction", gravityWork > 0.0 ? plastic/gravityWork : 0.0);
+            summary.addNumber("boundary_dissipation_fraction", gravityWork > 0.0 ? boundaryWork/gravityWork : 0.0);
+            summary.addNumber("numerical_dissipation_fraction", gravityWork > 0.0 ? numerical/gravityWork : 0.0);
+        }
         const std::string runMechanism = output::runMechanism(mechanisms, mech.name, atRest);
         summary.addString("mechanism", runMechanism);
         summary.addString("final_state_mechanism", mech.name);
