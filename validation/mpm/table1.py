@@ -5,8 +5,8 @@ this script, table1.md (paper MPM and DAM runouts, slideMPM's per resolution,
 the error against the paper, the detected mechanism, the wall time),
 table1.png (bars) and table1.json (the raw results).
 
-Usage: validation/mpm/table1.py [--cells 10,20] [--ppc 2] [--cases 1,2,3] [--stored]
-(after ./Allwmake; defaults: cell H0/10 with 2 x 2 particles, all cases)"""
+Usage: validation/mpm/table1.py [--cells 10,20] [--ppc 4] [--cases 1,2,3] [--stored]
+(after ./Allwmake; defaults: cell H0/10 with the paper's 4 x 4 particles, all cases)"""
 import argparse
 import json
 import os
@@ -50,7 +50,7 @@ def run_case(c, cells, ppc, work):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cells", default="10")
-    ap.add_argument("--ppc", type=int, default=2)
+    ap.add_argument("--ppc", type=int, default=4)
     ap.add_argument("--cases", default=",".join(str(c) for c in range(1, 14)))
     ap.add_argument("--stored", action="store_true", help="rewrite table1.md/png from table1.json without running")
     args = ap.parse_args()
