@@ -36,23 +36,35 @@ void prepareOutput(const std::string& caseDir, const std::string& method)
     fs::remove(summary, ec);
 }
 
-RunoutLog::RunoutLog(const std::string& caseDir, const std::string& method, bool append, double startTime)
-:
-    path_((fs::path(methodOutputDir(caseDir, method))/"runout.dat").string())
+std::ofstream openHistory(const std::string& path, const std::string& header, const bool append,
+                          const double startTime)
 {
-    std::vector<RunoutSample> kept;
+    std::vector<std::string> kept;
     if (append)
     {
-        for (const RunoutSample& s : readRunoutLog(path_))
+        std::ifstream is(path);
+        std::string line;
+        while (std::getline(is, line))
         {
-            if (s.time <= startTime*(1.0 + 1e-12) + 1e-300) kept.push_back(s);
+            if (line.empty() || line[0] == '#') continue;
+            std::istringstream ls(line);
+            double t;
+            if (ls >> t && t <= startTime*(1.0 + 1e-12) + 1e-300) kept.push_back(line);
         }
     }
-    os_.open(path_, std::ios::trunc);
-    if (!os_) throw std::runtime_error("cannot write " + path_);
-    os_ << runoutHeader;
-    for (const RunoutSample& s : kept) write(s);
+    std::ofstream os(path, std::ios::trunc);
+    if (!os) throw std::runtime_error("cannot write " + path);
+    os << header;
+    for (const std::string& line : kept) os << line << '\n';
+    os.flush();
+    return os;
 }
+
+RunoutLog::RunoutLog(const std::string& caseDir, const std::string& method, bool append, double startTime)
+:
+    path_((fs::path(methodOutputDir(caseDir, method))/"runout.dat").string()),
+    os_(openHistory(path_, runoutHeader, append, startTime))
+{}
 
 void RunoutLog::write(const RunoutSample& s)
 {

@@ -318,27 +318,9 @@ const char* const energyHeader =
 
 EnergyLog::EnergyLog(const std::string& caseDir, const bool append, const double startTime)
 :
-    path_(output::methodOutputDir(caseDir, "slideMPM") + "/energy.dat")
-{
-    std::vector<std::string> kept;
-    if (append)
-    {
-        std::ifstream is(path_);
-        std::string line;
-        while (std::getline(is, line))
-        {
-            if (line.empty() || line[0] == '#') continue;
-            std::istringstream ls(line);
-            double t;
-            if (ls >> t && t <= startTime*(1.0 + 1e-12) + 1e-300) kept.push_back(line);
-        }
-    }
-    os_.open(path_, std::ios::trunc);
-    if (!os_) throw std::runtime_error("cannot write " + path_);
-    os_ << energyHeader;
-    for (const std::string& line : kept) os_ << line << '\n';
-    os_.flush();
-}
+    path_(output::methodOutputDir(caseDir, "slideMPM") + "/energy.dat"),
+    os_(output::openHistory(path_, energyHeader, append, startTime))
+{}
 
 void EnergyLog::write(const double t, const EnergyState& now, const EnergyState& start, const double boundaryWork)
 {
