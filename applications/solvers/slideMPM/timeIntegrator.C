@@ -528,8 +528,16 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
             vel(i, j, 0) = vx;
             vel(i, j, 1) = vy;
         }
-        if (rearWall && xOrigin + (i0 + i)*d <= rearX + 1e-9*d) holdAtRearWall(vel, i, ja, jb);
-        lost -= columnBoundaryWork(nodal, vel, i, ja, jb);
+        // Only the base's node and a rear wall's column change velocities: only they are worked.
+        if (rearWall && xOrigin + (i0 + i)*d <= rearX + 1e-9*d)
+        {
+            holdAtRearWall(vel, i, ja, jb);
+            lost -= columnBoundaryWork(nodal, vel, i, ja, jb);
+        }
+        else if (baseRow >= ja && baseRow < jb)
+        {
+            lost -= columnBoundaryWork(nodal, vel, i, baseRow, baseRow + 1);
+        }
     }, dissipated);
     return dissipated;
 }
