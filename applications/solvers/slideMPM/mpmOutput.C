@@ -322,14 +322,23 @@ EnergyLog::EnergyLog(const std::string& caseDir, const bool append, const double
     os_(output::openHistory(path_, energyHeader, append, startTime))
 {}
 
+EnergyBudget energyBudget(const EnergyState& now, const EnergyState& start, const double boundaryWork)
+{
+    EnergyBudget b;
+    b.gravity = start.potential - now.potential;
+    b.kinetic = now.kinetic - start.kinetic;
+    b.elastic = now.elastic - start.elastic;
+    b.plastic = now.plastic - start.plastic;
+    b.boundary = boundaryWork;
+    b.numerical = b.gravity - b.kinetic - b.elastic - b.plastic - b.boundary;
+    return b;
+}
+
 void EnergyLog::write(const double t, const EnergyState& now, const EnergyState& start, const double boundaryWork)
 {
-    const double gravity = start.potential - now.potential;
-    const double elastic = now.elastic - start.elastic;
-    const double plastic = now.plastic - start.plastic;
-    const double numerical = gravity - now.kinetic + start.kinetic - elastic - plastic - boundaryWork;
-    os_ << std::setprecision(10) << t << ' ' << gravity << ' ' << now.kinetic - start.kinetic << ' ' << elastic << ' ' << plastic
-        << ' ' << boundaryWork << ' ' << numerical << ' ' << (gravity > 0.0 ? numerical/gravity : 0.0) << '\n';
+    const EnergyBudget b = energyBudget(now, start, boundaryWork);
+    os_ << std::setprecision(10) << t << ' ' << b.gravity << ' ' << b.kinetic << ' ' << b.elastic << ' ' << b.plastic
+        << ' ' << b.boundary << ' ' << b.numerical << ' ' << (b.gravity > 0.0 ? b.numerical/b.gravity : 0.0) << '\n';
     os_.flush();
 }
 

@@ -282,15 +282,13 @@ int main(int argc, char** argv)
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
         {
             // The energy budget at the end (energy.dat has its history): where gravity's work went.
-            const mpm::EnergyState now = mpm::energyState(hp, frame, clay, d);
-            const double gravityWork = energyStart.potential - now.potential;
-            const double plastic = now.plastic - energyStart.plastic;
-            const double numerical = gravityWork - (now.kinetic - energyStart.kinetic)
-                                   - (now.elastic - energyStart.elastic) - plastic - boundaryWork;
-            summary.addNumber("gravity_work_J_per_m", gravityWork);
-            summary.addNumber("plastic_dissipation_fraction", gravityWork > 0.0 ? plastic/gravityWork : 0.0);
-            summary.addNumber("boundary_dissipation_fraction", gravityWork > 0.0 ? boundaryWork/gravityWork : 0.0);
-            summary.addNumber("numerical_dissipation_fraction", gravityWork > 0.0 ? numerical/gravityWork : 0.0);
+            const mpm::EnergyBudget b = mpm::energyBudget(mpm::energyState(hp, frame, clay, d), energyStart,
+                                                          boundaryWork);
+            const double share = b.gravity > 0.0 ? 1.0/b.gravity : 0.0;
+            summary.addNumber("gravity_work_J_per_m", b.gravity);
+            summary.addNumber("plastic_dissipation_fraction", b.plastic*share);
+            summary.addNumber("boundary_dissipation_fraction", b.boundary*share);
+            summary.addNumber("numerical_dissipation_fraction", b.numerical*share);
         }
         const std::string runMechanism = output::runMechanism(mechanisms, mech.name, atRest);
         summary.addString("mechanism", runMechanism);

@@ -561,22 +561,10 @@ namespace
 {
 
 // The energy budget of a run from its start: what mpmOutput's EnergyLog writes.
-struct Budget
+mpm::EnergyBudget budgetSince(const mpm::EnergyState& start, SceneRun& r, const double boundaryWork)
 {
-    double gravity, kinetic, elastic, plastic, boundary, numerical;
-};
-
-Budget budgetSince(const mpm::EnergyState& start, SceneRun& r, const double boundaryWork)
-{
-    const mpm::EnergyState now = mpm::energyState(mpm::HostPoints(r.points), r.frame, r.clay, r.grid.d);
-    Budget b;
-    b.gravity = start.potential - now.potential;
-    b.kinetic = now.kinetic - start.kinetic;
-    b.elastic = now.elastic - start.elastic;
-    b.plastic = now.plastic - start.plastic;
-    b.boundary = boundaryWork;
-    b.numerical = b.gravity - b.kinetic - b.elastic - b.plastic - b.boundary;
-    return b;
+    return mpm::energyBudget(mpm::energyState(mpm::HostPoints(r.points), r.frame, r.clay, r.grid.d), start,
+                             boundaryWork);
 }
 
 } // namespace
@@ -599,7 +587,7 @@ TEST(SlideMPM, EnergyBudgetOfASlidingBlockIsItsFriction)
     mpm::advanceTo(r.integrator, r.points, r.grid, r.t, 3.0, r.stats, &boundaryWork);
     double x3, y3, u3;
     centreOfMass(mpm::HostPoints(r.points), x3, y3, u3);
-    const Budget b = budgetSince(start, r, boundaryWork);
+    const mpm::EnergyBudget b = budgetSince(start, r, boundaryWork);
     const double M = sc.slide.density*sc.slide.length*sc.slide.height;
     EXPECT_NEAR(b.gravity, M*sc.g*std::sin(5.0*M_PI/180.0)*(x3 - x0), 1e-3*b.gravity);
     EXPECT_NEAR(b.boundary, iface.s_b*sc.slide.length*(x3 - x0), 0.03*b.boundary);
@@ -626,7 +614,7 @@ TEST(SlideMPM, EnergyBudgetShowsWhatPICDissipatesAndAPICKeeps)
         const mpm::EnergyState start = mpm::energyState(mpm::HostPoints(r.points), r.frame, r.clay, r.grid.d);
         double boundaryWork = 0.0;
         mpm::advanceTo(r.integrator, r.points, r.grid, r.t, 1.5, r.stats, &boundaryWork);
-        const Budget b = budgetSince(start, r, boundaryWork);
+        const mpm::EnergyBudget b = budgetSince(start, r, boundaryWork);
         EXPECT_NEAR(b.boundary, 0.0, 1e-9*b.gravity);   // a no-slip base does no work
         EXPECT_GT(b.gravity, 0.0);
         numerical[k] = b.numerical/b.gravity;
