@@ -105,7 +105,7 @@ int main(int argc, char** argv)
         output::MechanismHistory mechanisms;
         const double restartAt = output::restartTime(caseDir, rc, "slideMPM");
         std::unique_ptr<mpm::StepStatistics> restartStats;
-        mpm::EnergyState energyStart = mpm::energyState(mpm::HostPoints(points), frame, clay, d);
+        mpm::EnergyState energyStart = mpm::energyState(initial, frame, clay, d);
         double boundaryWork = 0.0;
         if (restartAt > 0.0)
         {
