@@ -5,8 +5,6 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
-#include <sstream>
-#include <stdexcept>
 #include <vector>
 
 namespace slide
