@@ -116,6 +116,11 @@ const std::vector<double>& StateFile::vector(const std::string& key) const
     return it->second;
 }
 
+bool StateFile::has(const std::string& key) const
+{
+    return data_.count(key) > 0;
+}
+
 double StateFile::scalar(const std::string& key) const
 {
     const std::vector<double>& v = vector(key);
@@ -172,6 +177,7 @@ void RestartClock::addTo(StateFile& f) const
     f.add("step", static_cast<double>(step));
     f.add("scheduleOrigin", scheduleOrigin);
     f.add("scheduleIndex", static_cast<double>(scheduleIndex));
+    f.add("scheduleInterval", scheduleInterval);
     std::vector<double> times, codes;
     for (const auto& m : mechanisms)
     {
@@ -190,6 +196,7 @@ RestartClock RestartClock::readFrom(const StateFile& f)
     c.step = static_cast<long long>(f.scalar("step"));
     c.scheduleOrigin = f.scalar("scheduleOrigin");
     c.scheduleIndex = static_cast<long long>(f.scalar("scheduleIndex"));
+    if (f.has("scheduleInterval")) c.scheduleInterval = f.scalar("scheduleInterval");
     const std::vector<double>& times = f.vector("mechanismTimes");
     const std::vector<double>& codes = f.vector("mechanismCodes");
     const auto& names = mechanismNames();

@@ -113,7 +113,7 @@ int main(int argc, char** argv)
             const mpm::RestartPoint at = mpm::readState(path, points);
             t = at.time;
             step = at.step;
-            schedule = output::WriteSchedule(rc, at.scheduleOrigin, at.scheduleIndex);
+            schedule = at.schedule(rc);
             initialFront = at.initialFront;
             initialMass = at.initialMass;
             highest = at.highest;
@@ -148,7 +148,7 @@ int main(int argc, char** argv)
             if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
             if (controls.writeState)
             {
-                mpm::writeState(caseDir, {{t, step, schedule.origin(), schedule.index(), mechanisms}, initialFront,
+                mpm::writeState(caseDir, {{t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, initialFront,
                                           initialMass, highest, stats, energyStart, boundaryWork}, points);
             }
             return hp;

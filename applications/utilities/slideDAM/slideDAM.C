@@ -71,7 +71,7 @@ int main(int argc, char** argv)
             const dam::RestartPoint at = dam::readState(output::statePath(caseDir, restartAt, "slideDAM"), slide);
             t = at.time;
             step = at.step;
-            schedule = output::WriteSchedule(rc, at.scheduleOrigin, at.scheduleIndex);
+            schedule = at.schedule(rc);
             mechanisms = at.mechanisms;
             std::cout << "Restarting from " << output::statePath(caseDir, restartAt, "slideDAM") << " (t = " << t
                       << " s, step " << step << ")\n" << std::endl;
@@ -104,7 +104,7 @@ int main(int argc, char** argv)
             if (series) series->add(t, dam::profile(slide, sc));
             if (controls.writeState)
             {
-                dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), mechanisms}, slide);
+                dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, slide);
             }
         };
 

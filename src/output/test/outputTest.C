@@ -63,6 +63,56 @@ TEST(RestartState, HexFloatsRoundTripBitForBit)
     fs::remove_all(d);
 }
 
+TEST(RestartState, ScheduleResumesUnderAChangedWriteInterval)
+{
+    // A run written every 5 s, stopped after its write at 160 s (index 33: next
+    // write 165 s), restarted with writeInterval 0.5. Keeping the old index under the
+    // new interval put the next write at 16.5 s, behind the restart: a negative
+    // step that blew the run up.
+    slide::scene::RunControl rc;
+    rc.endTime = 300.0;
+    rc.writeInterval = 5.0;
+    WriteSchedule written(rc);
+    double t = 0.0;
+    while (written.index() < 33)
+    {
+        const WriteSchedule::Step s = written.clip(t, 0.7);
+        t = s.time;
+        if (written.writeDue(s)) written.next();
+    }
+    ASSERT_DOUBLE_EQ(t, 160.0);
+    RestartClock clock;
+    clock.time = t;
+    clock.scheduleOrigin = written.origin();
+    clock.scheduleIndex = written.index();
+    clock.scheduleInterval = written.interval();
+    StateFile f;
+    clock.addTo(f);
+    const fs::path d = freshDir("schedule");
+    f.write((d/"s.state").string());
+    const RestartClock back = RestartClock::readFrom(StateFile::read((d/"s.state").string()));
+
+    // Same interval: the same write times, so a restart continues bit for bit.
+    WriteSchedule same = back.schedule(rc);
+    EXPECT_EQ(same.index(), 33);
+    EXPECT_EQ(same.clip(t, 100.0).time, 165.0);
+
+    // A new interval counts from the restart.
+    rc.writeInterval = 0.5;
+    WriteSchedule changed = back.schedule(rc);
+    const WriteSchedule::Step s = changed.clip(t, 100.0);
+    EXPECT_GT(s.dt, 0.0);
+    EXPECT_DOUBLE_EQ(s.time, 160.5);
+    EXPECT_TRUE(changed.writeDue(s));
+
+    // A state from before the interval was kept (none stored) restarts the same safe way.
+    RestartClock old = back;
+    old.scheduleInterval = 0.0;
+    rc.writeInterval = 5.0;
+    EXPECT_DOUBLE_EQ(old.schedule(rc).clip(t, 100.0).time, 165.0);
+    fs::remove_all(d);
+}
+
 TEST(OutputContract, RunoutLogRoundTripAndRestart)
 {
     const fs::path c = freshDir("runout");
