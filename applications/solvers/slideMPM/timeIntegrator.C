@@ -618,7 +618,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
             rate(p) = gdot;
             plasticRate(p) = dXi/dt;
         }
-        V(p) *= 1.0 + dil*dt;
+        V(p) *= stretchFactor(dil*dt);
         len(p, 0) = std::min(maxLength, len(p, 0)*stretchFactor(Lp[0]*dt));
         len(p, 1) = std::min(maxLength, len(p, 1)*stretchFactor(Lp[3]*dt));
         const double xn = x(p, 0) + dt*v(p, 0);
