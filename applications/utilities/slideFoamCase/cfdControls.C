@@ -10,7 +10,8 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "aheadHeightRatio", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling", "plugCreepRate", "processors", "endTime"});
+                      "aheadHeightRatio", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling",
+                      "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
     c.cellsPerHeight = c.setting == "reference" ? 60 : 20;
@@ -61,6 +62,11 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.plugCreepRate = d.getScalarInRange("plugCreepRate", 0.0, 1e3, false, true, "plug creep rate [1/s]");
     }
+    if (d.found("momentumTolerance"))
+    {
+        c.momentumTolerance = d.getScalarInRange("momentumTolerance", 1e-14, 1e-3, true, true,
+                                                 "momentum predictor's absolute tolerance");
+    }
     if (d.found("processors"))
     {
         c.processors = d.getLabel("processors");
@@ -81,7 +87,7 @@ std::string CfdControls::describe() const
     os << ", height " << heightRatio << " H0";
     if (aheadHeightRatio < heightRatio) os << " (" << aheadHeightRatio << " H0 from H0 ahead of the slide on)";
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
-       << ", processors " << processors;
+       << ", momentum tolerance " << momentumTolerance << ", processors " << processors;
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";
     return os.str();
 }

@@ -351,7 +351,7 @@ R"(solvers
         // The plug's capped viscosity makes the momentum matrix stiff.
         solver          PBiCGStab;
         preconditioner  DILU;
-        tolerance       1e-8;
+        tolerance       )" + num(c.momentumTolerance) + R"(;
         relTol          0;
     }
 }
