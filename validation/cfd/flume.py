@@ -31,7 +31,7 @@ GATE = 1.8
 def cfd_run(work, cells, processors=1):
     c = make_case(FLUME, work, "cfd_H0_%d_np%d" % (cells, processors), control={"endTime": 4.1, "writeInterval": 4.1},
                   cfd={"cellsPerHeight": cells, "reach": 4.5, "processors": processors,
-                       "heightRatio": 1.3, "aheadHeightRatio": 0.75})
+                       "heightRatio": 1.3, "aheadHeightRatio": 0.75, "momentumTolerance": 1e-6})
     prepare(c)
     run_slidefoam(c, processors=processors)
     s = read_summary(os.path.join(c, "postProcessing", "slideFoam", "summary.json"))
