@@ -29,7 +29,11 @@ GATE = 1.8
 
 
 def cfd_run(work, cells, processors=1):
-    c = make_case(FLUME, work, "cfd_H0_%d_np%d" % (cells, processors), control={"endTime": 4.1, "writeInterval": 4.1},
+    # The benchmark's settings (validation/cfd/README.md): interFoam's Courant limits and the momentum predictor to
+    # 1e-6 take the paper's mesh under 15 minutes serially; the tutorial keeps 0.5 and 1e-8, at which serial and
+    # parallel runs agree closely enough for slideFoam_parallel and the peer check.
+    c = make_case(FLUME, work, "cfd_H0_%d_np%d" % (cells, processors),
+                  control={"endTime": 4.1, "writeInterval": 4.1, "maxCo": 1, "maxAlphaCo": 1},
                   cfd={"cellsPerHeight": cells, "reach": 4.5, "processors": processors,
                        "heightRatio": 1.3, "aheadHeightRatio": 0.75, "momentumTolerance": 1e-6})
     prepare(c)
