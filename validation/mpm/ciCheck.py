@@ -12,7 +12,7 @@ runs whose expected values come from physics, not from tuning.
 
   - Table 1 Case 1 (s_uo = 150 Pa, the thinnest, fastest deposit) with the
     tutorial's mpmDict (H0/10, the paper's 4x4 particles): at rest within 12 %
-    of the paper's MPM runout, 300 m (measured 287.0 m). With 2x2 particles the
+    of the paper's MPM runout, 300 m (measured 282.3 m). With 2x2 particles the
     B-bar let the cell on the base fill a third over and the slide stopped at
     215 m (validation/mpm/README.md): this is the check that it stays found.
 
