@@ -35,10 +35,11 @@ void MaterialPoints::sortByCell(BackgroundGrid& grid)
     const auto x = position;
     const double invD = 1.0/grid.d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0, nj = grid.nj;
+    const RowShear rows = grid.rows;
     Kokkos::parallel_for("cellKeys", Kokkos::RangePolicy<ExecutionSpace>(0, count), KOKKOS_LAMBDA(const int p)
     {
         int i, j;
-        Stencil::cell(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, i, j);
+        Stencil::cell(x(p, 0), x(p, 1) - rows.height(x(p, 0)), xOrigin, invD, i0, j0, i, j);
         keys(p) = i*nj + j;
     });
     const int nBins = grid.ni*grid.nj;
@@ -55,7 +56,8 @@ long long MaterialPoints::estimateCount(const scene::Scene& sc, const double d, 
 }
 
 MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& frame, const UndrainedClay& clay,
-                                   const double nu, const double d, const int ppc, const bool geostatic)
+                                   const double nu, const double d, const int ppc, const bool geostatic,
+                                   const RowShear& rows)
 {
     const double a = d/ppc;
     const double s0 = sc.slide.rearPosition, s1 = sc.slide.frontPosition();
@@ -72,11 +74,13 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
         {
             double xf, yf;
             frame.toFrame(p.x + h*n.x, p.z + h*n.z, xf, yf);
+            yf -= rows.height(xf);
             xmin = std::min(xmin, xf); xmax = std::max(xmax, xf);
             ymin = std::min(ymin, yf); ymax = std::max(ymax, yf);
         }
     }
-    // Sub-cells aligned with the grid (rear at a node line, base at y = 0 when planar).
+    // Sub-cells aligned with the grid (rear at a node line, base at y = 0 when
+    // planar; along the grid's rows where they follow a polyline base).
     const long long i0 = static_cast<long long>(std::floor((xmin - frame.rearX)/a)) - 1;
     const long long i1 = static_cast<long long>(std::ceil((xmax - frame.rearX)/a)) + 1;
     const long long j0 = static_cast<long long>(std::floor(ymin/a)) - 1;
@@ -89,7 +93,7 @@ MaterialPoints MaterialPoints::seed(const scene::Scene& sc, const BaseFrame& fra
     {
         for (long long j = j0; j <= j1; ++j)
         {
-            const double xf = frame.rearX + (i + 0.5)*a, yf = (j + 0.5)*a;
+            const double xf = frame.rearX + (i + 0.5)*a, yf = rows.height(xf) + (j + 0.5)*a;
             double X, Z, s = 0.0, h = 0.0;
             frame.toGlobal(xf, yf, X, Z);
             sc.base.coordinates(X, Z, s, h);

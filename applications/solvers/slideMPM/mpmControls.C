@@ -105,7 +105,7 @@ std::string MpmControls::describe(const double cellSize) const
     std::ostringstream os;
     os << "setting " << setting << ": cell H0/" << cellsPerHeight << ", " << particlesPerCell << "x"
        << particlesPerCell << " particles per cell, quadratic B-splines"
-       << (baseBoundary == BaseBoundary::fitted ? " fitted to a planar base" : " cut by the base") << ", "
+       << (baseBoundary == BaseBoundary::fitted ? " fitted to the base" : " cut by the base") << ", "
        << (transfer == Transfer::quadratic ? "APIC + quadratic mode across the base (PolyPIC)"
            : transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")

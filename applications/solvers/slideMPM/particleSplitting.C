@@ -53,6 +53,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
     const auto x = mp.position;
     const double d = grid.d, invD = 1.0/d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0;
+    const RowShear rows = grid.rows;
     grid.pressureSumsCurrent = false;   // the particles change
     sumOverCells(grid, x, n, KOKKOS_LAMBDA(const int, double& a, double&) { a = 1.0; });
 
@@ -70,7 +71,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
         if ((lx > longest || ly > longest) && 0.5*vol(p) >= minVolume)
         {
             int i, j;
-            Stencil::cell(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, i, j);
+            Stencil::cell(x(p, 0), x(p, 1) - rows.height(x(p, 0)), xOrigin, invD, i0, j0, i, j);
             if (count(i, j, 0) < fullCell) a = lx >= ly ? 0 : 1;
         }
         if (final)
@@ -103,7 +104,10 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
         // half a cell: the grid's window around the parents holds them.
         const double h = std::min(0.25*ls(p, a), 0.5*d);
         const double hx = a == 0 ? h : 0.0, hy = a == 1 ? h : 0.0;
-        const double dvx = C(p, 0)*hx + C(p, 1)*hy, dvy = C(p, 2)*hx + C(p, 3)*hy;
+        // C is the velocity's gradient on the grid's lattice: the offset in its
+        // coordinates has the height above the sheared rows' base.
+        const double hr = hy - rows.slope(xs(p, 0))*hx;
+        const double dvx = C(p, 0)*hx + C(p, 1)*hr, dvy = C(p, 2)*hx + C(p, 3)*hr;
         const double x0 = xs(p, 0), y0 = xs(p, 1), vx0 = vel(p, 0), vy0 = vel(p, 1);
         const double half[4] = {0.5*m(p), 0.5*V(p), 0.5*ls(p, a), 0.5*W(p)};
         const int member[2] = {p, c};

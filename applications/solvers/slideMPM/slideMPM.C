@@ -71,8 +71,10 @@ int main(int argc, char** argv)
         }
         const mpm::BaseFrame frame = mpm::BaseFrame::fromScene(sc);
         const mpm::UndrainedClay clay = controls.clay(sc.rheology, d);
-        mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc);
-        mpm::BackgroundGrid grid(d, frame.rearX);
+        const mpm::RowShear rows = mpm::gridRows(frame, controls);
+        mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc, true,
+                                                               rows);
+        mpm::BackgroundGrid grid(d, frame.rearX, rows);
         const mpm::TimeIntegrator integrator(frame, clay, mpm::basalContact(sc.interface), controls, sc.slide.density);
 
         const std::string backend = backendName();
@@ -136,7 +138,7 @@ int main(int argc, char** argv)
             series.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideMPM"), "particles"));
             series->truncateAfter(restartAt > 0.0 ? restartAt : -1.0);
         }
-        mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points);
+        mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points, rows);
         output::RunoutSample last;
         auto write = [&](double t, bool logRow = true)
         {
@@ -175,7 +177,7 @@ int main(int argc, char** argv)
             {
                 std::ostringstream os;
                 os << "material spans x in [" << stats.xmin << ", " << stats.xmax << "] m, y in [" << stats.ymin
-                   << ", " << stats.ymax << "] m of the base frame: the background grid would need more memory "
+                   << ", " << stats.ymax << "] m of the base frame" << (rows.on ? " (height above the base)" : "") << ": the background grid would need more memory "
                    << "than is free";
                 throw output::BlowUp(t, "the particle cloud", "grid extent", os.str());
             }
@@ -204,7 +206,7 @@ int main(int argc, char** argv)
             // Runaway: faster than a fall from the highest start point to the lowest
             // point reached could make it, with a factor 2 of margin.
             double Xl, Zl;
-            frame.toGlobal(next.xmax, next.ymin, Xl, Zl);
+            frame.toGlobal(next.xmax, next.ymin + rows.height(next.xmax), Xl, Zl);
             const double drop = std::max(highest - Zl, H0);
             const double bound = 2.0*std::sqrt(2.0*sc.g*drop) + integrator.waveSpeed();
             if (!next.finite || next.maxSpeed > bound)

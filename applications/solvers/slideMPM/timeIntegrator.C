@@ -26,6 +26,7 @@ struct TransferSetup
     ParticleScalar m, V;
     double invD, xOrigin, dt;
     int i0, j0;
+    RowShear rows;                // the rows' base where they follow a polyline base
     bool apic, fittedBase;
     bool allQuadratic;            // the quadratic transfer: every particle's mode
 
@@ -34,7 +35,7 @@ struct TransferSetup
                   const MpmControls::Transfer transfer, const bool fitted)
     :
         x(mp.position), v(mp.velocity), Q(mp.quadraticMode), C(mp.affine), m(mp.mass), V(mp.volume),
-        invD(1.0/grid.d), xOrigin(grid.xOrigin), dt(dt_), i0(grid.i0), j0(grid.j0),
+        invD(1.0/grid.d), xOrigin(grid.xOrigin), dt(dt_), i0(grid.i0), j0(grid.j0), rows(grid.rows),
         apic(transfer != MpmControls::Transfer::pic), fittedBase(fitted),
         allQuadratic(transfer == MpmControls::Transfer::quadratic)
     {}
@@ -58,7 +59,8 @@ struct ParticleToGrid : TransferSetup
     KOKKOS_FORCEINLINE_FUNCTION void scatterParticle(const int p) const
     {
         auto acc = scatter.access();
-        const Stencil st(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, fittedBase, AllQuadratic);
+        const double xp = x(p, 0), slope = rows.slope(xp);
+        const Stencil st(xp, x(p, 1) - rows.height(xp), xOrigin, invD, i0, j0, fittedBase, AllQuadratic);
         const int bx = st.bx, by = st.by;
         const double fx = st.fx;
         const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
@@ -87,7 +89,9 @@ struct ParticleToGrid : TransferSetup
         const Quad PDx = Quad::of({0.0, mp_*C00, mp_*C10, 0.0});
         const Quad PDy = Quad::of({0.0, mp_*C01, mp_*C11, 0.0});
         const Quad PGx = Quad::of({0.0, -Sxx, -Sxy, 0.0});
-        const Quad PGy = Quad::of({0.0, -Sxy, -Syy, 0.0});
+        // Under sheared rows a weight's x derivative is dN/dx - b'(x) dN/dy
+        // (lattice derivatives): its share moves into the y term.
+        const Quad PGy = Quad::of({0.0, -(Sxy - slope*Sxx), -(Syy - slope*Sxy), 0.0});
         const bool modeHere = AllQuadratic || (apic && st.quadratic);
         const Quad PQ = modeHere ? Quad::of({0.0, mp_*Q(p, 0), mp_*Q(p, 1), 0.0}) : Quad::broadcast(0.0);
         if (AllQuadratic)
@@ -180,7 +184,8 @@ struct GridToParticle : TransferSetup
     template<bool AllQuadratic>
     KOKKOS_FORCEINLINE_FUNCTION void transfer(const int p, double& nx, double& ny, double& v2) const
     {
-        const Stencil st(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, fittedBase, AllQuadratic);
+        const double xp = x(p, 0), yRow = x(p, 1) - rows.height(xp);
+        const Stencil st(xp, yRow, xOrigin, invD, i0, j0, fittedBase, AllQuadratic);
         const int bx = st.bx, by = st.by;
         const double fx = st.fx;
         const double *wx = st.wx, *dwx = st.dwx, *wy = st.wy, *dwy = st.dwy;
@@ -210,6 +215,10 @@ struct GridToParticle : TransferSetup
             Gy += wx[a]*rowDy;
             if (AllQuadratic) Bq += wx[a]*rowQ;
         }
+        // The velocity gradient in x and y from the lattice's (sheared rows:
+        // d/dx = d/dx_lattice - b'(x) d/dy); APIC's affine field stays the
+        // lattice's, as its moments are.
+        if (rows.on) Gx += (-rows.slope(xp))*Gy;
         const double vx = u[0], vy = u[1];
         const double L00 = Gx[0], L01 = Gy[0], L11 = Gy[1];
         // B is in cells: 4/d^2 * d (D_yy differs in the base's span of a fitted base).
@@ -221,7 +230,7 @@ struct GridToParticle : TransferSetup
             Q(p, 0) = st.invQ*Bq[0];
             Q(p, 1) = st.invQ*Bq[1];
         }
-        else if (apic && fittedBase && x(p, 1) < twoCells)
+        else if (apic && fittedBase && yRow < twoCells)
         {
             // Even APIC needs the quadratic mode in a fitted base's cell: the
             // affine field alone would carry to the base's nodes, which the base
@@ -256,7 +265,7 @@ struct GridToParticle : TransferSetup
         // Statistics of where the particles are going; they move in the stress pass,
         // after the nodal averaging has used the weights at the old positions.
         nx = x(p, 0) + dt*vx;
-        ny = x(p, 1) + dt*vy;
+        ny = x(p, 1) + dt*vy - rows.height(nx);
         v2 = vx*vx + vy*vy;
     }
 
@@ -345,15 +354,25 @@ TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay
     frame_(frame), clay_(clay), contact_(contact), controls_(controls),
     splitting_{controls.particleSplitting, controls.maxParticleLength},
     waveSpeed_(std::sqrt(clay.constrainedModulus()/density)),
-    fittedBase_(controls.baseBoundary == MpmControls::BaseBoundary::fitted && frame.level.flat())
+    fittedBase_(controls.baseBoundary == MpmControls::BaseBoundary::fitted),
+    rows_(gridRows(frame, controls))
 {}
+
+RowShear gridRows(const BaseFrame& frame, const MpmControls& controls)
+{
+    RowShear rows;
+    rows.on = controls.baseBoundary == MpmControls::BaseBoundary::fitted && !frame.level.flat();
+    if (rows.on) rows.base = frame.level;
+    return rows;
+}
 
 double TimeIntegrator::stableTimeStep(const double cellSize, const double maxSpeed) const
 {
-    return controls_.courant*cellSize/(waveSpeed_ + maxSpeed);   // Eq. (6)
+    // Eq. (6), with the rows' spacing where sheared rows bring them closer than d.
+    return controls_.courant*cellSize*rows_.minRowSpacing()/(waveSpeed_ + maxSpeed);
 }
 
-StepStatistics TimeIntegrator::statistics(const MaterialPoints& mp)
+StepStatistics TimeIntegrator::statistics(const MaterialPoints& mp, const RowShear& rows)
 {
     GridToParticle f;
     double r[GridToParticle::nStats];
@@ -366,8 +385,9 @@ StepStatistics TimeIntegrator::statistics(const MaterialPoints& mp)
         const double v2 = v(p, 0)*v(p, 0) + v(p, 1)*v(p, 1);
         r[GridToParticle::xmax] = std::max(r[GridToParticle::xmax], x(p, 0));
         r[GridToParticle::negXmin] = std::max(r[GridToParticle::negXmin], -x(p, 0));
-        r[GridToParticle::ymax] = std::max(r[GridToParticle::ymax], x(p, 1));
-        r[GridToParticle::negYmin] = std::max(r[GridToParticle::negYmin], -x(p, 1));
+        const double y = x(p, 1) - rows.height(x(p, 0));
+        r[GridToParticle::ymax] = std::max(r[GridToParticle::ymax], y);
+        r[GridToParticle::negYmin] = std::max(r[GridToParticle::negYmin], -y);
         r[GridToParticle::speed2] = std::max(r[GridToParticle::speed2], v2);
         r[GridToParticle::kinetic] += 0.5*m(p)*v2;
         if (!std::isfinite(x(p, 0) + x(p, 1) + v2)) r[GridToParticle::nonFinite] = 1.0;
@@ -504,6 +524,7 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
     const double rearX = frame_.rearX;
     // A slide covering a column's base gives its base node the volume d^2 (particleToGrid).
     const double fullVolume = d*d;
+    const RowShear rows = grid.rows;
     const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
     double dissipated = 0.0;
     Kokkos::parallel_reduce("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i, double& lost)
@@ -523,7 +544,9 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
             {
                 const double volume = nodal(i, j, BackgroundGrid::volume);
                 const double fraction = volume < fullVolume ? volume/fullVolume : 1.0;
-                contact.apply(1, &m, &vx, &vy, 1.0, 0.0, d, fraction, dt, gSep*dt);
+                double tx, ty, length;
+                rows.columnTangent(xOrigin + (i0 + i)*d, d, tx, ty, length);
+                contact.apply(1, &m, &vx, &vy, tx, ty, length, fraction, dt, gSep*dt);
             }
             vel(i, j, 0) = vx;
             vel(i, j, 1) = vy;
@@ -585,6 +608,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     const auto avg = grid.averaging;
     const double invD = 1.0/grid.d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0, ni = grid.ni, nj = grid.nj;
+    const RowShear rows = grid.rows;
     // The next step's B-bar pressure, summed here where the stress and the new place are at hand.
     if (average)
     {
@@ -604,7 +628,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         if (average)
         {
             int i, j;
-            Stencil::cell(x(p, 0), x(p, 1), xOrigin, invD, i0, j0, i, j);   // where G2P summed it
+            Stencil::cell(x(p, 0), x(p, 1) - rows.height(x(p, 0)), xOrigin, invD, i0, j0, i, j);   // where G2P summed it
             dil = avg(i, j, 0);   // the cell's mean
         }
         double xip = xi(p), sup, gdot;
@@ -644,7 +668,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         if (average)
         {
             int i, j;
-            Stencil::cell(xn, yn, xOrigin, invD, i0, j0, i, j);
+            Stencil::cell(xn, yn - rows.height(xn), xOrigin, invD, i0, j0, i, j);
             // A particle that left the storage (a blow-up, or a grid that must grow
             // and so will sum afresh) has no cell to add to.
             if (i >= 0 && i < ni && j >= 0 && j < nj)
