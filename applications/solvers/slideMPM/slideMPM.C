@@ -171,6 +171,14 @@ int main(int argc, char** argv)
             ? output::availableMemoryBytes()*8/10/mpm::MaterialPoints::bytesPerParticle : 1ll << 40;
         // s_u and the strain rates are output only: recorded by the steps whose end is written.
         bool restPending = false;
+        // Hydroplaning needs motion: the water film that carries the slide has no
+        // strength at rest, so a block that climbs an adverse slope would slide back
+        // and forth for ever. Its runout is where its bulk motion stops (the
+        // downslope momentum reaches zero), as slideDAM arrests a column whose
+        // velocity would reverse; an elastic block rings too much for every particle
+        // to fall below restVelocity together.
+        const bool hydroplaning = sc.interface.type == scene::Interface::Type::hydroplaning;
+        bool turned = false;
         while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
@@ -226,17 +234,20 @@ int main(int argc, char** argv)
             }
             // Slow is not rest while accelerating: a slide released under a small net force starts slowly.
             slowingDown = next.maxSpeed <= stats.maxSpeed;
+            turned = turned || (hydroplaning && stats.momentumX > 0.0 && next.momentumX <= 0.0);
             stats = next;
 
             // At rest after a step that did not record: one more step, which records
             // what the state written at rest holds.
-            restPending = rc.stopAtRest && stats.maxSpeed < rc.restVelocity && slowingDown && !recorded;
+            const bool slow = stats.maxSpeed < rc.restVelocity;
+            restPending = rc.stopAtRest && ((slow && slowingDown) || turned) && !recorded;
             if (restPending) continue;
-            if (rc.stopAtRest && stats.maxSpeed < rc.restVelocity && (slowingDown || confirming))
+            if (rc.stopAtRest && ((slow && (slowingDown || confirming)) || turned))
             {
                 atRest = true;
                 write(t);
-                progress.report(t, step, true, "all particles at rest");
+                progress.report(t, step, true, slow ? "all particles at rest"
+                                                    : "the slide's downslope motion stopped (hydroplaning holds nothing at rest)");
                 break;
             }
             if (schedule.writeDue(s))

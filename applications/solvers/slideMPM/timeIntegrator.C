@@ -140,11 +140,11 @@ struct ParticleToGrid : TransferSetup
 };
 
 // Grid-to-particle transfer (velocity, APIC affine field, velocity gradient) with the B-bar's cell sums of the dilatation
-// and the step's reductions (bounding box, speed, kinetic energy, finiteness) in the same pass.
+// and the step's reductions (bounding box, speed, kinetic energy, downslope momentum, finiteness) in the same pass.
 struct GridToParticle : TransferSetup
 {
     typedef double value_type[];
-    enum { xmax = 0, negXmin, ymax, negYmin, speed2, nonFinite, kinetic, nStats };
+    enum { xmax = 0, negXmin, ymax, negYmin, speed2, nonFinite, kinetic, momentumX, nStats };
     const unsigned value_count = nStats;
 
     ParticleTensor L;
@@ -159,7 +159,7 @@ struct GridToParticle : TransferSetup
     KOKKOS_INLINE_FUNCTION void operator()(const int item, value_type s) const
     {
         double hi[5] = {s[xmax], s[negXmin], s[ymax], s[negYmin], s[speed2]};
-        double ke = s[kinetic];
+        double ke = s[kinetic], px = s[momentumX];
         bool finite = true;
         const int end = (item + 1)*particlesPerItem < count ? (item + 1)*particlesPerItem : count;
         for (int p = item*particlesPerItem; p < end; ++p)
@@ -174,9 +174,11 @@ struct GridToParticle : TransferSetup
             hi[3] = -ny > hi[3] ? -ny : hi[3];
             hi[4] = v2 > hi[4] ? v2 : hi[4];
             ke += 0.5*m(p)*v2;
+            px += m(p)*v(p, 0);
         }
         s[xmax] = hi[0]; s[negXmin] = hi[1]; s[ymax] = hi[2]; s[negYmin] = hi[3]; s[speed2] = hi[4];
         s[kinetic] = ke;
+        s[momentumX] = px;
         if (!finite) s[nonFinite] = 1.0;
     }
 
@@ -273,14 +275,14 @@ struct GridToParticle : TransferSetup
     {
         for (int c = 0; c < nStats; ++c)
         {
-            if (c == kinetic) dst[c] += src[c];
+            if (c == kinetic || c == momentumX) dst[c] += src[c];
             else if (src[c] > dst[c]) dst[c] = src[c];
         }
     }
 
     KOKKOS_INLINE_FUNCTION void init(value_type dst) const
     {
-        for (int c = 0; c < nStats; ++c) dst[c] = (c == kinetic || c == nonFinite || c == speed2) ? 0.0 : -1e300;
+        for (int c = 0; c < nStats; ++c) dst[c] = (c == kinetic || c == momentumX || c == nonFinite || c == speed2) ? 0.0 : -1e300;
     }
 };
 
@@ -342,6 +344,7 @@ StepStatistics toStatistics(const double* r)
     s.ymin = -r[GridToParticle::negYmin];
     s.maxSpeed = std::sqrt(r[GridToParticle::speed2]);
     s.kineticEnergy = r[GridToParticle::kinetic];
+    s.momentumX = r[GridToParticle::momentumX];
     s.finite = r[GridToParticle::nonFinite] == 0.0 && std::isfinite(s.xmax + s.xmin + s.ymax + s.ymin);
     return s;
 }
@@ -390,6 +393,7 @@ StepStatistics TimeIntegrator::statistics(const MaterialPoints& mp, const RowShe
         r[GridToParticle::negYmin] = std::max(r[GridToParticle::negYmin], -y);
         r[GridToParticle::speed2] = std::max(r[GridToParticle::speed2], v2);
         r[GridToParticle::kinetic] += 0.5*m(p)*v2;
+        r[GridToParticle::momentumX] += m(p)*v(p, 0);
         if (!std::isfinite(x(p, 0) + x(p, 1) + v2)) r[GridToParticle::nonFinite] = 1.0;
     }
     return toStatistics(r);
