@@ -26,8 +26,8 @@ runs whose expected values come from physics, not from tuning.
     (RowShear): the runout lies within 3 % of the planar Case 2's in table1.json.
     Measured: +2.1 % at H0/10 (73.1 against 71.6 m) and +1.7 % at H0/20 (76.7
     against 75.4 m), where the cell itself moves the planar runout by 5 %: the
-    sheared cells are a different discretisation of the same slide, and a bug in
-    the shear (a missing -b' dN/dy term) would move it by far more.
+    sheared cells are a different discretisation of the same slide (the tolerance
+    was 2 % before that measurement).
 
   - A Bingham layer (binghamLayer.py) on a no-slip slope, cell H/10, the base a
     knot line of the B-splines: the surface velocity (mean over 7-10 s) within
