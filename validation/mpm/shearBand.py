@@ -6,9 +6,10 @@ H0/60. Writes, beside this script, shearBand.md (fronts at 5, 10 and 30 s,
 final runout, mechanisms, wall time), shearBand.png (front histories) and
 shearBand.json (the raw results).
 
-Usage: validation/mpm/shearBand.py [--stored] [--fine]
-(after ./Allwmake; about 50 minutes on one core. --fine runs Case 11 at H0/40 with
-the band to 10 s, about 5 minutes on 2 cores, and adds it to the stored results)"""
+Usage: validation/mpm/shearBand.py [--stored] [--fine [--cells N] [--end T]]
+(after ./Allwmake; about 30 minutes on 2 cores. --fine runs Case 11 with the band
+at H0/N (default 40) to T s (default 10; H0/40 to 30 s takes 12 minutes on 2
+cores). Either keeps the stored runs of the other set.)"""
 import argparse
 import json
 import os
@@ -28,9 +29,9 @@ SCENES = [("Case 11", "table1/case11", 5.0, 30.0),
           ("escarpment", "mediterraneanEscarpment", 10.0, None)]
 
 
-def runs(fine):
+def runs(fine, cells=40, end=10.0):
     if fine:
-        return [("Case 11", "table1/case11", 5.0, 10.0, 40, 5.0/60.0)]
+        return [("Case 11", "table1/case11", 5.0, end, cells, 5.0/60.0)]
     out = []
     for name, tut, H0, end in SCENES:
         cells = (10,) if name == "escarpment" else (10, 20)
@@ -123,15 +124,20 @@ def write(results):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--stored", action="store_true", help="rewrite shearBand.md/png from shearBand.json")
-    ap.add_argument("--fine", action="store_true", help="run Case 11 at H0/40 (to 10 s) and add it to the stored results")
+    ap.add_argument("--fine", action="store_true", help="run Case 11 at a finer cell with the band and add it to the stored results")
+    ap.add_argument("--cells", type=int, default=40, help="with --fine: cells per H0 (default 40)")
+    ap.add_argument("--end", type=float, default=10.0, help="with --fine: end time [s] (default 10)")
     args = ap.parse_args()
     path = os.path.join(here, "shearBand.json")
     if args.stored:
         results = json.load(open(path))
     else:
         work = tempfile.mkdtemp(prefix="slideMPM_shearBand_")
-        results = [r for r in json.load(open(path)) if r["cells"] != 40] if args.fine else []
-        for spec in runs(args.fine):
+        todo = runs(args.fine, args.cells, args.end)
+        # A stored run that this one does not repeat (the other set's) is kept.
+        results = [r for r in json.load(open(path))
+                   if not any((r["scene"], r["cells"], r["band"]) == (t[0], t[4], t[5]) for t in todo)]
+        for spec in todo:
             res = run(*spec, work)
             results.append(res)
             print("%s H0/%d %s: %.1f m at %g s (%s), %.0f s" % (
