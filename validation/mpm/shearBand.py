@@ -7,7 +7,7 @@ final runout, mechanisms, wall time), shearBand.png (front histories) and
 shearBand.json (the raw results).
 
 Usage: validation/mpm/shearBand.py [--stored] [--fine [--cells N] [--end T]]
-(after ./Allwmake; about 30 minutes on 2 cores. --fine runs Case 11 with the band
+(after ./Allwmake; about 10 minutes on 2 cores. --fine runs Case 11 with the band
 at H0/N (default 40) to T s (default 10; H0/40 to 30 s takes 12 minutes on 2
 cores). Either keeps the stored runs of the other set.)"""
 import argparse
@@ -87,6 +87,9 @@ def write(results):
             "yes" if r["atRest"] else "no", r["mech10"] or "-",
             (r["mech30"] if r["endTime"] >= 30.0 - 1e-9 else None) or "-", r["mechanism"],
             r["shearBand"] or "-", r["wall"]))
+        if r.get("restartedAt"):
+            # A run continued from its written state (slideMPM restarts bit for bit: CTest slideMPM_restart*).
+            lines[-1] = lines[-1][:-2] + " (in two parts, restarted at %g s) |" % r["restartedAt"]
     # The mesh dependence in one number per scene and counting: spread of the fronts at 10 s over the cells.
     lines += ["", "Front at 10 s, finest over coarsest cell (1 = mesh-objective):", ""]
     for name, _, _, _ in SCENES:
