@@ -46,18 +46,16 @@ def table1_results():
             out[r["case"]]["DAM"] = {"runout": r["runout"], "atRest": r["atRest"], "end": r["endTime"],
                                      "mechanism": r["mechanism"], "wall": r["wall"], "history": r.get("history"),
                                      "setup": "%d columns" % r["columns"]}
-    mpm = load("mpm/table1.json") or []
-    for r in mpm:
-        if r["cells"] == 10 and r["ppc"] == 4 and "runout" in r:
-            out[r["case"]]["MPM"] = {"runout": r["runout"], "atRest": r["atRest"], "end": r["endTime"],
-                                     "mechanism": r["mechanism"], "wall": r["wall"], "history": r.get("history"),
-                                     "setup": "H0/10, 4x4"}
-    for r in mpm:
-        if MPM_FINE.get(r["case"]) == (r["cells"], r["ppc"]) and "runout" in r:
-            out[r["case"]]["MPM"] = {"runout": r["runout"], "atRest": r["atRest"], "end": r["endTime"],
-                                     "mechanism": r["mechanism"], "wall": r["wall"], "history": r.get("history"),
-                                     "setup": "H0/%d, %dx%d" % (r["cells"], r["ppc"], r["ppc"]),
-                                     "note": ", H0/%d %dx%d" % (r["cells"], r["ppc"], r["ppc"])}
+    mpm = [r for r in load("mpm/table1.json") or [] if "runout" in r]
+    # H0/10 with 4x4 first, then the finer cell of the cases that need one, which replaces it.
+    for r in [r for r in mpm if (r["cells"], r["ppc"]) == (10, 4)] + \
+             [r for r in mpm if MPM_FINE.get(r["case"]) == (r["cells"], r["ppc"])]:
+        setup = "H0/%d, %dx%d" % (r["cells"], r["ppc"], r["ppc"])
+        out[r["case"]]["MPM"] = {"runout": r["runout"], "atRest": r["atRest"], "end": r["endTime"],
+                                 "mechanism": r["mechanism"], "wall": r["wall"], "history": r.get("history"),
+                                 "setup": setup}
+        if r["case"] in MPM_FINE:
+            out[r["case"]]["MPM"]["note"] = ", " + setup.replace(",", "")
     for r in load("cfd/table1.json") or []:
         if "runout" not in r:
             out[r["case"]].setdefault("CFD", {"failed": True, "cells": 0})
