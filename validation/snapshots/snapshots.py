@@ -51,6 +51,11 @@ def mpm_resolution(case):
     return FINE.get(case, (10, 4))
 
 
+def mpm_label(case):
+    cells, ppc = mpm_resolution(case)
+    return "H0/%d, %dx%d" % (cells, ppc, ppc)
+
+
 def run(case, end, work):
     d = make_case(os.path.join(TOP, "tutorials", "table1", "case%02d" % case), work, "case%02d" % case,
                   control={"endTime": "%g" % end, "stopAtRest": "no", "writeInterval": 1},
@@ -97,8 +102,8 @@ def main():
         sc = ax.scatter(s, h, c=xi, s=1.5, cmap="viridis", vmin=0.0,
                         vmax=xi95 if xi95 else max(1.0, float(xi.max())))
         ax.plot(dam["s"], dam["thickness"], color="tab:red", lw=1.2, label="slideDAM surface")
-        ax.set_title("Case %d at t = %g s (slideDAM %g s, slideMPM %g s at H0/%d, %dx%d)"
-                     % ((c, t, td, tm) + (mpm_resolution(c)[0],) + (mpm_resolution(c)[1],)*2), fontsize=9)
+        ax.set_title("Case %d at t = %g s (slideDAM %g s, slideMPM %g s at %s)" % (c, t, td, tm, mpm_label(c)),
+                     fontsize=9)
         ax.set_ylabel("height [m]")
         ax.legend(fontsize=7, loc="upper right")
         fig.colorbar(sc, ax=ax, label="MPM xi" + (" (to xi95)" if xi95 else ""), pad=0.01)
@@ -121,10 +126,9 @@ def main():
              "exaggerated).", "", "| case | t [s] | DAM front s [m] | MPM front s [m] | DAM max thickness [m] | "
              "MPM max height [m] | MPM max xi | MPM mechanism at t | MPM cell |", "|---|---|---|---|---|---|---|---|---|"]
     for r in record:
-        lines.append("| %d | %g | %.1f | %.1f | %.2f | %.2f | %.1f | %s | H0/%d, %dx%d |" % (
+        lines.append("| %d | %g | %.1f | %.1f | %.2f | %.2f | %.1f | %s | %s |" % (
             r["case"], r["time"], r["dam"]["front_s"], r["mpm"]["front_s"], r["dam"]["maxThickness"],
-            r["mpm"]["maxThickness"], r["mpm"]["maxXi"], r["mpm"]["mechanism"],
-            mpm_resolution(r["case"])[0], mpm_resolution(r["case"])[1], mpm_resolution(r["case"])[1]))
+            r["mpm"]["maxThickness"], r["mpm"]["maxXi"], r["mpm"]["mechanism"], mpm_label(r["case"])))
     with open(os.path.join(HERE, "snapshots.json"), "w") as f:
         json.dump({"summary": "\n".join(lines), "snapshots": record}, f, indent=1)
     shutil.rmtree(work, ignore_errors=True)
