@@ -21,6 +21,15 @@ void PolyData::addScalar(const std::string& name, std::vector<double> values)
     arrays_.push_back({name, 1, std::move(values)});
 }
 
+const std::vector<double>& PolyData::array(const std::string& name) const
+{
+    for (const Array& a : arrays_)
+    {
+        if (a.name == name) return a.data;
+    }
+    throw std::out_of_range("PolyData: no array " + name);
+}
+
 void PolyData::addVector(const std::string& name, std::vector<double> values)
 {
     if (values.size() != 3*nPoints()) throw std::logic_error("PolyData: array " + name + " has the wrong size");

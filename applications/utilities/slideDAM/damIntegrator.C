@@ -261,6 +261,7 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
                 Up = project(dt*aPlug, dt*tauY/(rho_*D));
                 U = rMax_*Up;
                 Ds = Up != 0.0 ? D*(1.0 - rMax_)/(1.0 - a1_) : 0.0;
+                if (Up != 0.0) rateB = beta_*std::fabs(Up)/Ds;   // the new layer's, for the output's s_u
             }
             else
             {

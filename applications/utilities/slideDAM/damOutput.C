@@ -29,13 +29,18 @@ output::RunoutSample runoutSample(const SlideColumns& s, double time, double rho
     return r;
 }
 
+double shearStrength(const SlideColumns& s, const scene::Scene& sc, int j)
+{
+    return sc.rheology.strength(s.basalRate[j], s.xi[j]);
+}
+
 double basalStress(const SlideColumns& s, const scene::Scene& sc, int j)
 {
     const auto regime = static_cast<rheology::BasalRegime>(s.regime[j]);
     const double sb = sc.interface.basalStrength(std::fabs(s.U[j]));
     if (regime == rheology::BasalRegime::confinedSliding || regime == rheology::BasalRegime::plugSliding) return sb;
     if (s.Up[j] == 0.0) return 0.0;
-    return std::min(sc.rheology.strength(s.basalRate[j], s.xi[j]), sb);
+    return std::min(shearStrength(s, sc, j), sb);
 }
 
 output::PolyData profile(const SlideColumns& s, const scene::Scene& sc)
@@ -43,7 +48,7 @@ output::PolyData profile(const SlideColumns& s, const scene::Scene& sc)
     output::PolyData pd;
     pd.cells = output::PolyData::Cells::polyline;
     const int n = s.nNodes();
-    std::vector<double> sArc(n), D(n), U(n), Up(n), Ds(n), xi(n), su(n), remoulded(n), regime(n);
+    std::vector<double> sArc(n), D(n), U(n), Up(n), Ds(n), xi(n), su(n), tauB(n), remoulded(n), regime(n);
     for (int j = 0; j < n; ++j)
     {
         // The ends of a free slide have zero depth; a wall end keeps its column's.
@@ -58,7 +63,8 @@ output::PolyData profile(const SlideColumns& s, const scene::Scene& sc)
         Up[j] = s.Up[j];
         Ds[j] = s.shearLayer[j];
         xi[j] = s.xi[j];
-        su[j] = basalStress(s, sc, j);
+        su[j] = shearStrength(s, sc, j);
+        tauB[j] = basalStress(s, sc, j);
         remoulded[j] = sc.rheology.remouldingFactor(s.xi[j]);
         regime[j] = s.regime[j];
     }
@@ -68,7 +74,8 @@ output::PolyData profile(const SlideColumns& s, const scene::Scene& sc)
     pd.addScalar("plugVelocity", Up);
     pd.addScalar("shearLayerThickness", Ds);
     pd.addScalar("xi", xi);
-    pd.addScalar("basalStress", su);
+    pd.addScalar("s_u", su);
+    pd.addScalar("basalStress", tauB);
     pd.addScalar("remouldedRatio", remoulded);
     pd.addScalar("basalRegime", regime);
     return pd;

@@ -3,6 +3,7 @@
 // a statically stable slide that must not creep, and arrest without chatter.
 #include "damControls.H"
 #include "damIntegrator.H"
+#include "damOutput.H"
 #include "slideColumns.H"
 #include "lubricationReference.H"
 #include "blockScene.H"
@@ -139,6 +140,61 @@ TEST(SlideDAM, MassIsConservedToRoundOff)
     double A = 0.0;
     for (int i = 0; i < s.nColumns(); ++i) A += s.columnThickness(i)*(s.x[i + 1] - s.x[i]);
     EXPECT_NEAR(A, A0, 1e-12*A0);
+}
+
+TEST(SlideDAM, ProfileCarriesTheStrengthAndTheBasalStressThatItCaps)
+{
+    // A Case 2-like slide shearing on a no-slip base: the base resists with the material's own
+    // strength, Eq. (1) at the basal rate, which the rate effect raises above s_uo.
+    scene::Scene sc = blockScene(3.43, 500.0, scene::Interface());
+    sc.slide.height = 5.0;
+    sc.slide.density = 600.0;
+    sc.rheology.eta = 0.45;
+    sc.rheology.n = 0.23;
+    sc.rheology.gdotRef = 0.06;
+    const dam::DamControls c = fast(100);
+    {
+        dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
+        dam::DamIntegrator integ(sc, c);
+        double t = 0.0;
+        runTo(integ, s, t, 5.0);
+        const output::PolyData pd = dam::profile(s, sc);
+        const std::vector<double>& su = pd.array("s_u");
+        const std::vector<double>& tau = pd.array("basalStress");
+        int sheared = 0;
+        for (int j = 0; j < s.nNodes(); ++j)
+        {
+            EXPECT_DOUBLE_EQ(su[j], sc.rheology.strength(s.basalRate[j], s.xi[j])) << "node " << j;
+            if (s.Up[j] == 0.0) continue;
+            ++sheared;
+            EXPECT_GT(su[j], sc.rheology.s_uo) << "node " << j;
+            EXPECT_DOUBLE_EQ(tau[j], su[j]) << "node " << j;
+        }
+        EXPECT_GT(sheared, s.nNodes()/2);
+    }
+    // The same slide on a frictional base weaker than s_uo (Eq. 5, plug sliding): the base yields
+    // at s_b and the material keeps its strength above it.
+    sc.interface.type = scene::Interface::Type::frictional;
+    sc.interface.s_b = 0.4*sc.rheology.s_uo;
+    {
+        dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
+        dam::DamIntegrator integ(sc, c);
+        double t = 0.0;
+        runTo(integ, s, t, 5.0);
+        const output::PolyData pd = dam::profile(s, sc);
+        const std::vector<double>& su = pd.array("s_u");
+        const std::vector<double>& tau = pd.array("basalStress");
+        int sliding = 0;
+        for (int j = 0; j < s.nNodes(); ++j)
+        {
+            if (s.U[j] == 0.0) continue;
+            ++sliding;
+            EXPECT_DOUBLE_EQ(tau[j], sc.interface.s_b) << "node " << j;
+            EXPECT_GE(su[j], sc.rheology.s_uo) << "node " << j;
+        }
+        EXPECT_GT(sliding, s.nNodes()/2);
+    }
+    EXPECT_THROW(dam::profile(dam::SlideColumns::fromScene(sc, 10), sc).array("strength"), std::out_of_range);
 }
 
 TEST(SlideDAM, StaticallyStableSlideDoesNotCreep)
