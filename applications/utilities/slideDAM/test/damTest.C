@@ -27,6 +27,18 @@ scene::Scene blockScene(double angleDeg, double s_uo, scene::Interface iface)
     return scene::blockScene(angleDeg, 40.0, 2.0, 500.0, s_uo, iface);
 }
 
+// Table 1 Case 2's slide (40 x 5 m, rho' 600, s_uo 500 Pa, eta 0.45, n 0.23) on 3.43 deg, no-slip.
+scene::Scene case2LikeScene()
+{
+    scene::Scene sc = blockScene(3.43, 500.0, scene::Interface());
+    sc.slide.height = 5.0;
+    sc.slide.density = 600.0;
+    sc.rheology.eta = 0.45;
+    sc.rheology.n = 0.23;
+    sc.rheology.gdotRef = 0.06;
+    return sc;
+}
+
 dam::DamControls fast(int columns = 100)
 {
     dam::DamControls c;
@@ -123,13 +135,8 @@ TEST(SlideDAM, SlowStartIsNotRest)
 
 TEST(SlideDAM, MassIsConservedToRoundOff)
 {
-    // A weak Case 2-like slide that deforms a lot.
-    scene::Scene sc = blockScene(3.43, 500.0, scene::Interface());
-    sc.slide.height = 5.0;
-    sc.slide.density = 600.0;
-    sc.rheology.eta = 0.45;
-    sc.rheology.n = 0.23;
-    sc.rheology.gdotRef = 0.06;
+    // A weak slide that deforms a lot.
+    const scene::Scene sc = case2LikeScene();
     const dam::DamControls c = fast(200);
     dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
     dam::DamIntegrator integ(sc, c);
@@ -146,18 +153,18 @@ TEST(SlideDAM, ProfileCarriesTheStrengthAndTheBasalStressThatItCaps)
 {
     // A Case 2-like slide shearing on a no-slip base: the base resists with the material's own
     // strength, Eq. (1) at the basal rate, which the rate effect raises above s_uo.
-    scene::Scene sc = blockScene(3.43, 500.0, scene::Interface());
-    sc.slide.height = 5.0;
-    sc.slide.density = 600.0;
-    sc.rheology.eta = 0.45;
-    sc.rheology.n = 0.23;
-    sc.rheology.gdotRef = 0.06;
-    const dam::DamControls c = fast(100);
+    scene::Scene sc = case2LikeScene();
+    const auto runFor5s = [](const scene::Scene& sc)
     {
+        const dam::DamControls c = fast(100);
         dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
         dam::DamIntegrator integ(sc, c);
         double t = 0.0;
         runTo(integ, s, t, 5.0);
+        return s;
+    };
+    {
+        const dam::SlideColumns s = runFor5s(sc);
         const output::PolyData pd = dam::profile(s, sc);
         const std::vector<double>& su = pd.array("s_u");
         const std::vector<double>& tau = pd.array("basalStress");
@@ -177,10 +184,7 @@ TEST(SlideDAM, ProfileCarriesTheStrengthAndTheBasalStressThatItCaps)
     sc.interface.type = scene::Interface::Type::frictional;
     sc.interface.s_b = 0.4*sc.rheology.s_uo;
     {
-        dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
-        dam::DamIntegrator integ(sc, c);
-        double t = 0.0;
-        runTo(integ, s, t, 5.0);
+        const dam::SlideColumns s = runFor5s(sc);
         const output::PolyData pd = dam::profile(s, sc);
         const std::vector<double>& su = pd.array("s_u");
         const std::vector<double>& tau = pd.array("basalStress");
