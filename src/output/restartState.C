@@ -143,6 +143,20 @@ std::string statePath(const std::string& caseDir, double t, const std::string& m
     return (fs::path(caseDir)/timeName(t)/(method + ".state")).string();
 }
 
+void StatePurge::written(double t)
+{
+    if (keep_ <= 0) return;
+    times_.push_back(t);
+    while (times_.size() > static_cast<std::size_t>(keep_))
+    {
+        const fs::path state = statePath(caseDir_, times_.front(), method_);
+        times_.erase(times_.begin());
+        std::error_code ec;
+        fs::remove(state, ec);
+        if (fs::is_empty(state.parent_path(), ec) && !ec) fs::remove(state.parent_path(), ec);
+    }
+}
+
 double restartTime(const std::string& caseDir, const scene::RunControl& rc, const std::string& method)
 {
     if (rc.startFromLatest)

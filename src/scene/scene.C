@@ -207,6 +207,8 @@ RunControl readControl(const Dictionary& d)
     }
     c.writeInterval = d.getScalar("writeInterval");
     if (c.writeInterval <= 0.0) d.fail("writeInterval", "must be > 0 s");
+    c.purgeWrite = d.getLabel("purgeWrite", 0);
+    if (c.purgeWrite < 0) d.fail("purgeWrite", "must be >= 0 (0 keeps every write)");
     c.stopAtRest = d.getBool("stopAtRest", true);
     c.restVelocity = d.getScalar("restVelocity", 1e-3);
     if (c.restVelocity <= 0.0) d.fail("restVelocity", "must be > 0 m/s");

@@ -203,6 +203,8 @@ endTime         {end};
 
 writeControl    adjustableRunTime;
 writeInterval   1;
+// Keep only the last N writes (restart states; slideFoam's time directories); 0: all.
+purgeWrite      0;
 
 // All material slower than restVelocity counts as at rest.
 stopAtRest      {stop};

@@ -34,7 +34,7 @@ def run(s_uo, st, cells, ppc, end, work):
     d = make_case(os.path.join(TOP, "tutorials", "table1", "case13"), work, "suo%g_st%g" % (s_uo, st),
                   scene={"s_uo": "%g" % s_uo, "deltaRem": "%g" % (1.0/st)},
                   # Both methods are compared at the same time: at rest, or the front at endTime.
-                  control={"endTime": "%g" % end, "writeInterval": 5},
+                  control={"endTime": "%g" % end, "writeInterval": 5, "purgeWrite": 1},
                   # The tutorial's method dictionaries (Case 13's mpmDict counts xi per H0/60 shear band) at
                   # this resolution.
                   dam={"setting": "fast", "columns": 800, "writeFields": "no"},

@@ -140,6 +140,7 @@ int main(int argc, char** argv)
         }
         mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points, rows);
         output::RunoutSample last;
+        output::StatePurge purge(caseDir, "slideMPM", rc.purgeWrite);
         auto write = [&](double t, bool logRow = true)
         {
             const mpm::HostPoints hp(points);
@@ -152,6 +153,7 @@ int main(int argc, char** argv)
             {
                 mpm::writeState(caseDir, {{t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, initialFront,
                                           initialMass, highest, stats, energyStart, boundaryWork}, points);
+                purge.written(t);
             }
             return hp;
         };

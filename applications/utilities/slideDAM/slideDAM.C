@@ -88,6 +88,7 @@ int main(int argc, char** argv)
             series.reset(new output::PvdSeries(output::methodOutputDir(caseDir, "slideDAM"), "profile"));
             series->truncateAfter(restartAt > 0.0 ? restartAt : -1.0);
         }
+        output::StatePurge purge(caseDir, "slideDAM", rc.purgeWrite);
         auto write = [&](double t)
         {
             const output::RunoutSample sample = dam::runoutSample(slide, t, rho);
@@ -105,6 +106,7 @@ int main(int argc, char** argv)
             if (controls.writeState)
             {
                 dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, slide);
+                purge.written(t);
             }
         };
 

@@ -113,6 +113,43 @@ TEST(RestartState, ScheduleResumesUnderAChangedWriteInterval)
     fs::remove_all(d);
 }
 
+TEST(RestartState, PurgeWriteKeepsTheLastStatesOfThisMethodOnly)
+{
+    const fs::path c = freshDir("purge");
+    // Time 1 also holds another method's state, time 2 a field slideFoam wrote.
+    fs::create_directories(c/"1");
+    std::ofstream(c/"1"/"slideDAM.state") << "other method";
+    fs::create_directories(c/"2");
+    std::ofstream(c/"2"/"U") << "a CFD field";
+    StatePurge purge(c.string(), "slideMPM", 2);
+    for (double t : {0.5, 1.0, 2.0, 2.5, 3.0})
+    {
+        StateFile f;
+        f.add("time", t);
+        f.write(statePath(c.string(), t, "slideMPM"));
+        purge.written(t);
+    }
+    EXPECT_FALSE(fs::exists(c/"0.5"));                  // emptied: removed
+    EXPECT_FALSE(fs::exists(c/"1"/"slideMPM.state"));
+    EXPECT_TRUE(fs::exists(c/"1"/"slideDAM.state"));
+    EXPECT_FALSE(fs::exists(c/"2"/"slideMPM.state"));
+    EXPECT_TRUE(fs::exists(c/"2"/"U"));
+    EXPECT_TRUE(fs::exists(c/"2.5"/"slideMPM.state"));
+    EXPECT_TRUE(fs::exists(c/"3"/"slideMPM.state"));
+
+    // purgeWrite 0 (the default) keeps every write.
+    StatePurge keepAll(c.string(), "slideMPM", 0);
+    for (double t : {4.0, 5.0, 6.0})
+    {
+        StateFile f;
+        f.add("time", t);
+        f.write(statePath(c.string(), t, "slideMPM"));
+        keepAll.written(t);
+    }
+    for (const char* t : {"2.5", "3", "4", "5", "6"}) EXPECT_TRUE(fs::exists(c/t/"slideMPM.state")) << t;
+    fs::remove_all(c);
+}
+
 TEST(OutputContract, RunoutLogRoundTripAndRestart)
 {
     const fs::path c = freshDir("runout");

@@ -220,6 +220,17 @@ TEST_F(SceneFixture, EndTimeBeforeStartTime)
     EXPECT_EQ(fs::path(e.file()).filename(), "controlDict");
 }
 
+TEST_F(SceneFixture, PurgeWriteReadAndNegativeRejected)
+{
+    write(flumeScene, "endTime 4.1;\nwriteInterval 0.1;\npurgeWrite 2;\n");
+    EXPECT_EQ(Scene::read(dir.string()).control.purgeWrite, 2);
+    write(flumeScene, "endTime 4.1;\nwriteInterval 0.1;\npurgeWrite -1;\n");
+    const InputError e = readError();
+    EXPECT_EQ(e.key(), "purgeWrite");
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(fs::path(e.file()).filename(), "controlDict");
+}
+
 TEST_F(SceneFixture, MissingSceneFile)
 {
     const InputError e = readError();
