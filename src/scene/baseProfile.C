@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace slide
 {
@@ -88,6 +89,16 @@ double BaseProfile::elevation(double x) const
     const Point2& a = vertices_[i];
     const Point2& b = vertices_[i + 1];
     return a.z + (b.z - a.z)*(x - a.x)/(b.x - a.x);
+}
+
+std::string BaseProfile::pastEndWarning(const double sRear, const double sFront, const double t) const
+{
+    if (planar_ || (sFront <= length() && sRear >= 0.0)) return "";
+    std::ostringstream os;
+    os << "Warning: at t = " << t << " s the slide passed the " << (sFront > length() ? "last" : "first")
+       << " vertex of the base polyline (constant/sceneProperties, base.points); its end segment is extended in a "
+       << "straight line: lengthen the polyline if that is not the terrain";
+    return os.str();
 }
 
 double BaseProfile::arcLengthAtX(double x) const

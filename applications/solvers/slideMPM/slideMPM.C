@@ -181,6 +181,7 @@ int main(int argc, char** argv)
         // to fall below restVelocity together.
         const bool hydroplaning = sc.interface.type == scene::Interface::Type::hydroplaning;
         bool turned = false;
+        bool warnedPastBase = false;
         while (schedule.running(t))
         {
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
@@ -238,6 +239,13 @@ int main(int argc, char** argv)
             slowingDown = next.maxSpeed <= stats.maxSpeed;
             turned = turned || (hydroplaning && stats.momentumX > 0.0 && next.momentumX <= 0.0);
             stats = next;
+            if (!warnedPastBase)
+            {
+                const std::string warning = sc.base.pastEndWarning(frame.level.arcLength(stats.xmin),
+                                                                   frame.level.arcLength(stats.xmax), t);
+                if (!warning.empty()) std::cout << warning << "\n" << std::endl;
+                warnedPastBase = !warning.empty();
+            }
 
             // At rest after a step that did not record: one more step, which records
             // what the state written at rest holds.

@@ -141,15 +141,11 @@ int main(int argc, char** argv)
             speed = dam::DamIntegrator::maxSpeed(slide);
             ++step;
             t = s.time;
-            if (!sc.base.isPlanar() && !warnedPastBase
-                && (slide.x.back() > sc.base.length() || slide.x.front() < 0.0))
+            if (!warnedPastBase)
             {
-                std::cout << "Warning: at t = " << t << " s the slide passed the "
-                          << (slide.x.back() > sc.base.length() ? "last" : "first")
-                          << " vertex of the base polyline (constant/sceneProperties, base.points); its end "
-                          << "segment is extended in a straight line: lengthen the polyline if that is not the "
-                          << "terrain\n";
-                warnedPastBase = true;
+                const std::string warning = sc.base.pastEndWarning(slide.x.front(), slide.x.back(), t);
+                if (!warning.empty()) std::cout << warning << "\n";
+                warnedPastBase = !warning.empty();
             }
 
             if (rc.stopAtRest && dam::DamIntegrator::atRest(speed, speedBeforeStep, rc.restVelocity))

@@ -40,3 +40,16 @@ TEST(BaseProfile, PolylineArcLengthAndSegments)
     EXPECT_NEAR(b.point(-5.0).x, -3.0, 1e-12);
     EXPECT_NEAR(b.point(-5.0).z, 4.0, 1e-12);
 }
+
+TEST(BaseProfile, WarnsOnceTheSlidePassesAnEndVertex)
+{
+    const BaseProfile b = BaseProfile::polyline({{0, 0}, {3, -4}, {13, -4}});   // 15 m long
+    EXPECT_EQ(b.pastEndWarning(0.0, 15.0, 1.0), "");
+    const std::string last = b.pastEndWarning(2.0, 15.5, 7.5);
+    EXPECT_NE(last.find("at t = 7.5 s"), std::string::npos) << last;
+    EXPECT_NE(last.find("passed the last vertex"), std::string::npos) << last;
+    EXPECT_NE(last.find("base.points"), std::string::npos) << last;
+    EXPECT_NE(b.pastEndWarning(-0.1, 10.0, 1.0).find("passed the first vertex"), std::string::npos);
+    // A planar base has no ends.
+    EXPECT_EQ(BaseProfile::planar(5.0).pastEndWarning(-10.0, 1e6, 1.0), "");
+}
