@@ -145,7 +145,8 @@ std::string statePath(const std::string& caseDir, double t, const std::string& m
 
 void StatePurge::written(double t)
 {
-    if (keep_ <= 0) return;
+    // A time written again (a final write at the last write time) is one state, not two.
+    if (keep_ <= 0 || (!times_.empty() && times_.back() == t)) return;
     times_.push_back(t);
     while (times_.size() > static_cast<std::size_t>(keep_))
     {

@@ -129,6 +129,7 @@ TEST(RestartState, PurgeWriteKeepsTheLastStatesOfThisMethodOnly)
         f.write(statePath(c.string(), t, "slideMPM"));
         purge.written(t);
     }
+    purge.written(3.0);   // the last time written again: it must not push out 2.5
     EXPECT_FALSE(fs::exists(c/"0.5"));                  // emptied: removed
     EXPECT_FALSE(fs::exists(c/"1"/"slideMPM.state"));
     EXPECT_TRUE(fs::exists(c/"1"/"slideDAM.state"));
