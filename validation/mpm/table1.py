@@ -51,6 +51,7 @@ def run_case(c, cells, ppc, work):
             "atRest": s["at_rest"], "wall": s["wall_time_s"], "particles": s["problem_size"],
             "mechanism": s["mechanism"], "shearBand": s.get("shear_band"), "mech10": mechanism_at(s, 10.0),
             "mech30": mechanism_at(s, 30.0),
+            "baseContact": s.get("base_contact", "withinCell"),
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
             "maxVelocity": float(r["maxVelocity"][-1]),
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}

@@ -11,7 +11,11 @@ namespace mpm
 unsigned long long BackgroundGrid::bytesFor(const long long nNodes)
 {
     const unsigned long long threads = static_cast<unsigned long long>(ExecutionSpace().concurrency());
-    return 8ull*static_cast<unsigned long long>(nNodes)*((nComponents + 2 + 2)*(threads + 1) + 2);
+    // Nodal components, averaging and pressure sums with their duplicates, the
+    // velocity; and the base's fill, two per column with duplicates, where a
+    // window (fit) has at least 6 rows.
+    const unsigned long long n = static_cast<unsigned long long>(nNodes);
+    return 8ull*n*((nComponents + 2 + 2)*(threads + 1) + 2) + 8ull*2ull*(threads + 1)*(n/6 + 1);
 }
 
 bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, unsigned long long maxBytes)
@@ -44,6 +48,8 @@ bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, uns
     pressureSums = NodeField("pressureSums", ni, nj, 2);
     pressureSumsScatter = NodeScatter(pressureSums);
     pressureSumsCurrent = false;
+    baseFill = ColumnField("baseFill", ni, 2);
+    baseFillScatter = ColumnScatter(baseFill);
     return true;
 }
 

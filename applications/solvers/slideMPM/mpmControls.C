@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -68,6 +68,11 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.baseBoundary = d.getWordOneOf("baseBoundary", {"fitted", "levelSet"}) == "fitted"
             ? BaseBoundary::fitted : BaseBoundary::levelSet;
     }
+    if (d.found("baseContact"))
+    {
+        c.baseContact = d.getWordOneOf("baseContact", {"touching", "withinCell"}) == "touching"
+                      ? BaseContact::touching : BaseContact::withinCell;
+    }
     if (d.found("strainRate"))
     {
         c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
@@ -105,7 +110,10 @@ std::string MpmControls::describe(const double cellSize) const
     std::ostringstream os;
     os << "setting " << setting << ": cell H0/" << cellsPerHeight << ", " << particlesPerCell << "x"
        << particlesPerCell << " particles per cell, quadratic B-splines"
-       << (baseBoundary == BaseBoundary::fitted ? " fitted to the base" : " cut by the base") << ", "
+       << (baseBoundary == BaseBoundary::fitted
+           ? (baseContact == BaseContact::touching ? " fitted to the base (contact where the material touches it)"
+                                                   : " fitted to the base (contact within its nodes' cell)")
+           : " cut by the base") << ", "
        << (transfer == Transfer::quadratic ? "APIC + quadratic mode across the base (PolyPIC)"
            : transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")

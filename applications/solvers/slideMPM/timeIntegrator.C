@@ -48,6 +48,9 @@ struct ParticleToGrid : TransferSetup
     ParticleTensor sig;
     double d, gX, gY;
     bool cellPressure;
+    ColumnScatter baseFill;       // touching base contact: BackgroundGrid::baseFill
+    ParticleVector size;          // the particles' domains
+    bool fill = false;
 
     KOKKOS_INLINE_FUNCTION void operator()(const int p) const
     {
@@ -135,6 +138,27 @@ struct ParticleToGrid : TransferSetup
             // midpoint rule's error (6 % with 2 x 2 particles).
             const double Vb = Vp*(1.0 - wy[0]);
             for (int a = 0; a < 3; ++a) addToNode(acc, bx + a, by, Quad::of({0.0, 0.0, 0.0, wx[a]*Vb}));
+            if (fill) addBaseFill(p, bx, wx);
+        }
+    }
+
+    // The particle's domain (its height, at most a cell) split between the
+    // base cell's lowest strip and the rest of the cell, as volume.
+    KOKKOS_INLINE_FUNCTION void addBaseFill(const int p, const int bx, const double* wx) const
+    {
+        const double y = x(p, 1) - rows.height(x(p, 0));
+        const double h = size(p, 1) < d ? size(p, 1) : d;
+        if (!(h > 0.0)) return;
+        const double lo = y - 0.5*h > 0.0 ? y - 0.5*h : 0.0, hi = lo + h;
+        const double strip = baseTouchStrip*d;
+        const double inLowest = (hi < strip ? hi : strip) - (lo < strip ? lo : strip);
+        const double inRest = (hi < d ? hi : d) - (lo > strip ? lo : strip);
+        const double Vp = V(p)/h;
+        auto acc = baseFill.access();
+        for (int a = 0; a < 3; ++a)
+        {
+            if (inLowest > 0.0) acc(bx + a, 0) += wx[a]*Vp*inLowest;
+            if (inRest > 0.0) acc(bx + a, 1) += wx[a]*Vp*inRest;
         }
     }
 };
@@ -415,8 +439,17 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     f.d = grid.d;
     f.gX = frame_.gravityX;
     f.gY = frame_.gravityY;
+    f.fill = fittedBase_ && controls_.baseContact == MpmControls::BaseContact::touching;
+    if (f.fill)
+    {
+        Kokkos::deep_copy(grid.baseFill, 0.0);
+        grid.baseFillScatter.reset_except(grid.baseFill);
+        f.baseFill = grid.baseFillScatter;
+        f.size = mp.size;
+    }
     Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), f);
     Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
+    if (f.fill) Kokkos::Experimental::contribute(grid.baseFill, grid.baseFillScatter);
 }
 
 void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGrid& grid) const
@@ -530,6 +563,8 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
     const double fullVolume = d*d;
     const RowShear rows = grid.rows;
     const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
+    const bool touching = controls_.baseContact == MpmControls::BaseContact::touching;
+    const auto fill = grid.baseFill;
     double dissipated = 0.0;
     Kokkos::parallel_reduce("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i, double& lost)
     {
@@ -544,7 +579,7 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
             }
             // The base's traction acts on the base's nodes alone: theirs are the
             // only functions that do not vanish on the base line.
-            if (j == baseRow && m > 0.0)
+            if (j == baseRow && m > 0.0 && (!touching || touchesBase(fill(i, 0), fill(i, 1))))
             {
                 const double volume = nodal(i, j, BackgroundGrid::volume);
                 const double fraction = volume < fullVolume ? volume/fullVolume : 1.0;

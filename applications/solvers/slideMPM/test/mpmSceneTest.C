@@ -708,3 +708,54 @@ TEST(SlideMPM, EnergyBudgetShowsWhatPICDissipatesAndAPICKeeps)
     EXPECT_LT(numerical[1], 0.1*numerical[0]);
     EXPECT_GT(plastic[1], 0.3);
 }
+
+TEST(SlideMPM, BlockReleasedAboveTheBaseFallsOntoIt)
+{
+    // A strong block released 0.45 of a cell above a no-slip base (stress
+    // free, gravity on at t = 0) must fall freely onto it: 0.5 g t^2. With
+    // `withinCell` contact the base's nodes, whose functions reach a cell up,
+    // are held still under it and it hovers where it was released: the
+    // B-spline field spans the gap, and falling into it would compress the
+    // clay. `touching` frees them until the material fills the base cell's
+    // lowest eighth half as much as the rest of the cell.
+    for (auto contact : {mpm::MpmControls::BaseContact::withinCell, mpm::MpmControls::BaseContact::touching})
+    {
+        scene::Interface iface;
+        mpm::MpmControls c = controls(8, 4);
+        c.baseContact = contact;
+        SceneRun r(blockScene(0.0, 4.0, 1.0, 600.0, 1e5, iface), c, 100.0*1e5, false);
+        const double d = r.grid.d, gap = 0.45*d;
+        {
+            auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.position);
+            for (int p = 0; p < r.points.count; ++p) hx(p, 1) += gap;
+            Kokkos::deep_copy(r.points.position, hx);
+            r.stats = mpm::TimeIntegrator::statistics(r.points, r.grid.rows);
+        }
+        auto lowest = [&]()
+        {
+            const mpm::HostPoints hp(r.points);
+            double low = 1e300;
+            for (int p = 0; p < hp.count; ++p) low = std::min(low, hp.position(p, 1) - 0.5*hp.size(p, 1));
+            return low;
+        };
+        const double t1 = 0.05, freeFall = 0.5*9.81*t1*t1;   // 0.35 of the gap
+        r.advance(t1);
+        const double drop = gap - lowest();
+        r.advance(0.5);
+        const double landed = lowest();
+        std::cout << (contact == mpm::MpmControls::BaseContact::touching ? "touching" : "withinCell")
+                  << ": drop in " << t1 << " s " << drop << " m (free fall " << freeFall << " m), lowest at 0.5 s "
+                  << landed/d << " cells above the base\n";
+        if (contact == mpm::MpmControls::BaseContact::touching)
+        {
+            EXPECT_NEAR(drop, freeFall, 0.01*freeFall);
+            EXPECT_GE(landed, 0.0);
+            EXPECT_LT(landed, mpm::baseTouchStrip*d);
+        }
+        else
+        {
+            EXPECT_LT(drop, 0.01*freeFall);
+            EXPECT_GT(landed, 0.95*gap);
+        }
+    }
+}
