@@ -4,7 +4,8 @@
 // under gravity against the analytical one (and what the B-bar changes at
 // nu = 0.49), no penetration of the base, a stable slide that stays, and
 // particle splitting (what it keeps exactly, and what it changes in a runout),
-// and the energy budget (a sliding block's friction, PIC's dissipation).
+// the energy budget (a sliding block's friction, PIC's dissipation), and a block
+// released above the base falling onto it (the base holds only material that touches it).
 #include "backgroundGrid.H"
 #include "blockScene.H"
 #include "baseFrame.H"
