@@ -298,9 +298,7 @@ int main(int argc, char** argv)
         summary.addString("setting", controls.setting);
         summary.addNumber("cells_per_height", controls.cellsPerHeight);
         summary.addNumber("particles_per_cell", controls.particlesPerCell);
-        summary.addString("base_contact",
-                          controls.baseBoundary == mpm::MpmControls::BaseBoundary::levelSet ? "levelSet"
-                          : controls.baseContact == mpm::MpmControls::BaseContact::touching ? "touching" : "withinCell");
+        summary.addString("base_contact", controls.baseContactWord());
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);
         summary.addNumber("final_length_m", last.front - last.rear);

@@ -143,7 +143,8 @@ struct ParticleToGrid : TransferSetup
     }
 
     // The particle's domain (its height, at most a cell) split between the
-    // base cell's lowest strip and the rest of the cell, as volume.
+    // base cell's lowest strip and the rest of the cell, as volume; a domain
+    // reaching below the base (a particle put back on it) counts from the base up.
     KOKKOS_INLINE_FUNCTION void addBaseFill(const int p, const int bx, const double* wx) const
     {
         const double y = x(p, 1) - rows.height(x(p, 0));
