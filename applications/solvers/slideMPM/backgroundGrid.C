@@ -12,10 +12,10 @@ unsigned long long BackgroundGrid::bytesFor(const long long nNodes)
 {
     const unsigned long long threads = static_cast<unsigned long long>(ExecutionSpace().concurrency());
     // Nodal components, averaging and pressure sums with their duplicates, the
-    // velocity; and the base's fill, two per column with duplicates, where a
-    // window (fit) has at least 6 rows.
+    // velocity; and the base's fill and the row above the base, 2 + 3 per
+    // column with duplicates, where a window (fit) has at least 6 rows.
     const unsigned long long n = static_cast<unsigned long long>(nNodes);
-    return 8ull*n*((nComponents + 2 + 2)*(threads + 1) + 2) + 8ull*2ull*(threads + 1)*(n/6 + 1);
+    return 8ull*n*((nComponents + 2 + 2)*(threads + 1) + 2) + 8ull*5ull*(threads + 1)*(n/6 + 1);
 }
 
 bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, unsigned long long maxBytes)
@@ -50,6 +50,8 @@ bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, uns
     pressureSumsCurrent = false;
     baseFill = ColumnField("baseFill", ni, 2);
     baseFillScatter = ColumnScatter(baseFill);
+    rowAboveBase = ColumnField("rowAboveBase", ni, 3);
+    rowAboveBaseScatter = ColumnScatter(rowAboveBase);
     return true;
 }
 

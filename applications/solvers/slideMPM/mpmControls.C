@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -73,6 +73,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.baseContact = d.getWordOneOf("baseContact", {"touching", "withinCell"}) == "touching"
                       ? BaseContact::touching : BaseContact::withinCell;
     }
+    c.baseRowMassScaling = d.getBool("baseRowMassScaling", true);
     if (d.found("strainRate"))
     {
         c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
@@ -113,8 +114,9 @@ std::string MpmControls::describe(const double cellSize) const
        << (baseBoundary == BaseBoundary::fitted
            ? (baseContact == BaseContact::touching ? " fitted to the base (contact where the material touches it)"
                                                    : " fitted to the base (contact within its nodes' cell)")
-           : " cut by the base") << ", "
-       << (transfer == Transfer::quadratic ? "APIC + quadratic mode across the base (PolyPIC)"
+           : " cut by the base")
+       << (baseBoundary == BaseBoundary::fitted && !baseRowMassScaling ? " (no mass scaling of the row above it)" : "")
+       << ", " << (transfer == Transfer::quadratic ? "APIC + quadratic mode across the base (PolyPIC)"
            : transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
        << ", Eq. (1) at the " << (plasticStrainRate ? "plastic" : "total") << " shear strain rate"

@@ -51,6 +51,9 @@ struct ParticleToGrid : TransferSetup
     ColumnScatter baseFill;       // touching base contact: BackgroundGrid::baseFill
     ParticleVector size;          // the particles' domains
     bool fill = false;
+    ColumnScatter rowAbove;       // BackgroundGrid::rowAboveBase, where scaleRowAbove
+    double modulus = 0.0;         // the constrained modulus lambda + 2G [Pa]
+    bool scaleRowAbove = false;
 
     KOKKOS_INLINE_FUNCTION void operator()(const int p) const
     {
@@ -129,6 +132,10 @@ struct ParticleToGrid : TransferSetup
                 }
             }
         }
+        // The row above a fitted base's node: absolute row 0, the particle's
+        // row b when its first row is 0 - b.
+        const int bAbove = -j0 - by;
+        if (scaleRowAbove && bAbove >= 0 && bAbove < 3) addRowAbove(bx, bAbove, st, Vp, slope, Sxx, Syy, Sxy);
         if (st.baseSpan)
         {
             // The base's nodes count the volume of the cell on the base with the
@@ -139,6 +146,24 @@ struct ParticleToGrid : TransferSetup
             const double Vb = Vp*(1.0 - wy[0]);
             for (int a = 0; a < 3; ++a) addToNode(acc, bx + a, by, Quad::of({0.0, 0.0, 0.0, wx[a]*Vb}));
             if (fill) addBaseFill(p, bx, wx);
+        }
+    }
+
+    // The row above the base: the node's diagonal stiffness, modulus V |grad N|^2
+    // (an upper bound on its own frequency's square times its mass, B-bar or
+    // not), and the internal force's impulse, as scattered above (S: dt V sigma/d).
+    KOKKOS_INLINE_FUNCTION void addRowAbove(const int bx, const int b, const Stencil& st, const double Vp,
+                                            const double slope, const double Sxx, const double Syy,
+                                            const double Sxy) const
+    {
+        auto acc = rowAbove.access();
+        for (int a = 0; a < 3; ++a)
+        {
+            const double gx = st.dwx[a]*st.wy[b], gy = st.wx[a]*st.dwy[b];   // lattice, per cell
+            const double gxs = gx - slope*gy;
+            acc(bx + a, 0) += modulus*Vp*invD*invD*(gxs*gxs + gy*gy);
+            acc(bx + a, 1) -= gx*Sxx + gy*(Sxy - slope*Sxx);
+            acc(bx + a, 2) -= gx*Sxy + gy*(Syy - slope*Sxy);
         }
     }
 
@@ -448,9 +473,18 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         f.baseFill = grid.baseFillScatter;
         f.size = mp.size;
     }
+    f.scaleRowAbove = fittedBase_ && controls_.baseRowMassScaling;
+    if (f.scaleRowAbove)
+    {
+        Kokkos::deep_copy(grid.rowAboveBase, 0.0);
+        grid.rowAboveBaseScatter.reset_except(grid.rowAboveBase);
+        f.rowAbove = grid.rowAboveBaseScatter;
+        f.modulus = clay_.constrainedModulus();
+    }
     Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), f);
     Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
     if (f.fill) Kokkos::Experimental::contribute(grid.baseFill, grid.baseFillScatter);
+    if (f.scaleRowAbove) Kokkos::Experimental::contribute(grid.rowAboveBase, grid.rowAboveBaseScatter);
 }
 
 void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGrid& grid) const
@@ -566,6 +600,8 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
     const int ia = grid.wi0 - grid.i0, ib = ia + grid.wni;
     const bool touching = controls_.baseContact == MpmControls::BaseContact::touching;
     const auto fill = grid.baseFill;
+    const bool scaleRowAbove = controls_.baseRowMassScaling;
+    const auto above = grid.rowAboveBase;
     double dissipated = 0.0;
     Kokkos::parallel_reduce("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i, double& lost)
     {
@@ -577,6 +613,18 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
             {
                 vx = nodal(i, j, BackgroundGrid::momentumX)/m;
                 vy = nodal(i, j, BackgroundGrid::momentumY)/m;
+                if (scaleRowAbove && j == baseRow + 1)
+                {
+                    // The internal force's impulse I moves the node as if its
+                    // mass were dt^2 K (its own frequency 1/dt, half the
+                    // central difference's limit) where its mass is less.
+                    const double scaled = dt*dt*above(i, 0);
+                    if (scaled > m)
+                    {
+                        vx += above(i, 1)*(1.0/scaled - 1.0/m);
+                        vy += above(i, 2)*(1.0/scaled - 1.0/m);
+                    }
+                }
             }
             // The base's traction acts on the base's nodes alone: theirs are the
             // only functions that do not vanish on the base line.
