@@ -101,8 +101,9 @@ def escarpment(mpm):
     for a in (15.0, 30.0):
         variant("escarpment at %g deg" % a, angle=a)
     if mpm:
-        # slideMPM's grid rows follow the 30 deg face, sheared 29 deg against the chord: at the default
-        # Courant number 0.3 it blows up (either base contact), at 0.1 it runs.
+        # The time step's share on the steepest face (grid rows sheared 29 deg against the chord): Courant 0.1
+        # against the default 0.3, at which this variant blew up until session 23 gave the row above the base
+        # mass where a thin layer on it would ring (mpmDict baseRowMassScaling).
         variant("escarpment at 30 deg, slideMPM at Courant 0.1", angle=30.0, mpm_only={"courant": 0.1},
                 apps=("slideMPM",))
     for h in (6.0, 8.0, 12.0):
