@@ -52,6 +52,7 @@ def run_case(c, cells, ppc, work):
             "mechanism": s["mechanism"], "shearBand": s.get("shear_band"), "mech10": mechanism_at(s, 10.0),
             "mech30": mechanism_at(s, 30.0),
             "baseContact": s.get("base_contact", "withinCell"),
+            "baseRowMassScaling": s.get("base_row_mass_scaling"),
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
             "maxVelocity": float(r["maxVelocity"][-1]),
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}

@@ -299,6 +299,11 @@ int main(int argc, char** argv)
         summary.addNumber("cells_per_height", controls.cellsPerHeight);
         summary.addNumber("particles_per_cell", controls.particlesPerCell);
         summary.addString("base_contact", controls.baseContactWord());
+        // The choices a rerun must repeat to reproduce the runout (mpmDict's keys).
+        summary.addBool("base_row_mass_scaling",
+                        controls.baseBoundary == mpm::MpmControls::BaseBoundary::fitted && controls.baseRowMassScaling);
+        summary.addNumber("courant", controls.courant);
+        summary.addString("strain_rate", controls.plasticStrainRate ? "plastic" : "total");
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);
         summary.addNumber("final_length_m", last.front - last.rear);
