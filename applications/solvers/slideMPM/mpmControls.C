@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -78,6 +78,10 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
     }
+    if (d.found("initialStress"))
+    {
+        c.geostaticStart = d.getWordOneOf("initialStress", {"geostatic", "none"}) == "geostatic";
+    }
     if (d.found("shearBandThickness"))
     {
         c.shearBandThickness = d.getScalarInRange("shearBandThickness", 0.0, 1e6, true, true,
@@ -120,6 +124,7 @@ std::string MpmControls::describe(const double cellSize) const
            : transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
        << ", Eq. (1) at the " << (plasticStrainRate ? "plastic" : "total") << " shear strain rate"
+       << (geostaticStart ? "" : ", released stress free")
        << ", Courant " << courant << " (Eq. 6)"
        << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())
        << ", E = " << youngsModulusRatio << " s_uo, nu = " << poissonRatio;

@@ -72,8 +72,8 @@ int main(int argc, char** argv)
         const mpm::BaseFrame frame = mpm::BaseFrame::fromScene(sc);
         const mpm::UndrainedClay clay = controls.clay(sc.rheology, d);
         const mpm::RowShear rows = mpm::gridRows(frame, controls);
-        mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc, true,
-                                                               rows);
+        mpm::MaterialPoints points = mpm::MaterialPoints::seed(sc, frame, clay, controls.poissonRatio, d, ppc,
+                                                               controls.geostaticStart, rows);
         mpm::BackgroundGrid grid(d, frame.rearX, rows);
         const mpm::TimeIntegrator integrator(frame, clay, mpm::basalContact(sc.interface), controls, sc.slide.density);
 
@@ -304,6 +304,7 @@ int main(int argc, char** argv)
                         controls.baseBoundary == mpm::MpmControls::BaseBoundary::fitted && controls.baseRowMassScaling);
         summary.addNumber("courant", controls.courant);
         summary.addString("strain_rate", controls.plasticStrainRate ? "plastic" : "total");
+        summary.addString("initial_stress", controls.geostaticStart ? "geostatic" : "none");
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);
         summary.addNumber("final_length_m", last.front - last.rear);
