@@ -31,13 +31,18 @@ from cfdcase import set_entry, set_method_entries  # noqa: E402
 FINE = {11: (40, 2)}
 
 
-def run_case(c, cells, ppc, work):
+def run_case(c, cells, ppc, work, scene=None, numerics=None, tag=""):
+    """slideMPM on Table 1 Case c at cell H0/cells with ppc x ppc particles; `scene` sets entries of the
+    case's constant/sceneProperties (a sensitivity run, e.g. {"eta": 0}), `numerics` more of its mpmDict,
+    `tag` names its run directory."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
-    d = os.path.join(work, "case%02d_h%d_p%d" % (c, cells, ppc))
+    d = os.path.join(work, "case%02d_h%d_p%d%s" % (c, cells, ppc, tag))
     shutil.copytree(src, d, ignore=shutil.ignore_patterns("postProcessing", "log.*"))
+    for k, v in (scene or {}).items():
+        set_entry(os.path.join(d, "constant", "sceneProperties"), k, v)
     # The tutorial's mpmDict with the resolution of this run (its other entries, e.g. a shearBandThickness, kept).
     set_method_entries(d, "mpmDict", {"setting": "fast", "cellsPerHeight": cells, "particlesPerCell": ppc,
-                                      "writeFields": "no", "progressInterval": 30})
+                                      "writeFields": "no", "progressInterval": 30, **(numerics or {})})
     # One restart state kept: at H0/20 with 4x4 particles Case 4 writes 97 MB a second of its 100 s.
     set_entry(os.path.join(d, "system", "controlDict"), "purgeWrite", 1)
     p = subprocess.run([which("slideMPM"), "-case", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,

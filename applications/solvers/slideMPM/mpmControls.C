@@ -76,7 +76,9 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     c.baseRowMassScaling = d.getBool("baseRowMassScaling", true);
     if (d.found("strainRate"))
     {
-        c.plasticStrainRate = d.getWordOneOf("strainRate", {"plastic", "total"}) == "plastic";
+        const std::string r = d.getWordOneOf("strainRate", {"plastic", "total", "previousPlastic"});
+        c.plasticStrainRate = r != "total";
+        c.previousStepRate = r == "previousPlastic";
     }
     if (d.found("initialStress"))
     {
@@ -106,6 +108,7 @@ UndrainedClay MpmControls::clay(const rheology::HerschelBulkleyRemoulding& stren
 {
     UndrainedClay c = UndrainedClay::fromYoungs(strength, youngsModulusRatio*strength.s_uo, poissonRatio,
                                                 plasticStrainRate);
+    c.previousStepRate = previousStepRate;
     c.bandStrainFactor = rheology::shearBandStrainFactor(shearBandThickness, cellSize);
     return c;
 }
@@ -123,7 +126,8 @@ std::string MpmControls::describe(const double cellSize) const
        << ", " << (transfer == Transfer::quadratic ? "APIC + quadratic mode across the base (PolyPIC)"
            : transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
-       << ", Eq. (1) at the " << (plasticStrainRate ? "plastic" : "total") << " shear strain rate"
+       << ", Eq. (1) at the " << (!plasticStrainRate ? "total" : previousStepRate ? "previous step's plastic"
+                                                                                  : "plastic") << " shear strain rate"
        << (geostaticStart ? "" : ", released stress free")
        << ", Courant " << courant << " (Eq. 6)"
        << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())

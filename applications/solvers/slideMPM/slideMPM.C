@@ -303,7 +303,7 @@ int main(int argc, char** argv)
         summary.addBool("base_row_mass_scaling",
                         controls.baseBoundary == mpm::MpmControls::BaseBoundary::fitted && controls.baseRowMassScaling);
         summary.addNumber("courant", controls.courant);
-        summary.addString("strain_rate", controls.plasticStrainRate ? "plastic" : "total");
+        summary.addString("strain_rate", controls.strainRateWord());
         summary.addString("initial_stress", controls.geostaticStart ? "geostatic" : "none");
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);

@@ -693,6 +693,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     const auto v = mp.velocity;
     const auto len = mp.size;
     const bool average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
+    const bool lagged = clay.plasticRate && clay.previousStepRate;   // the next step reads this step's rate
     const auto avg = grid.averaging;
     const double invD = 1.0/grid.d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0, ni = grid.ni, nj = grid.nj;
@@ -720,7 +721,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
             dil = avg(i, j, 0);   // the cell's mean
         }
         double xip = xi(p), sup, gdot;
-        const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot, record);
+        const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot, record, lagged ? plasticRate(p) : 0.0);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         xi(p) = xip;
         if (dXi > 0.0) work(p) += sup*dXi*V(p);   // the return's dissipation, s:dEps_p = s_u dXi
@@ -728,8 +729,8 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         {
             su(p) = sup;
             rate(p) = gdot;
-            plasticRate(p) = dXi/dt;
         }
+        if (record || lagged) plasticRate(p) = dXi/dt;
         V(p) *= stretchFactor(dil*dt);
         len(p, 0) = std::min(maxLength, len(p, 0)*stretchFactor(Lp[0]*dt));
         len(p, 1) = std::min(maxLength, len(p, 1)*stretchFactor(Lp[3]*dt));

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace slide;
 using mpm::UndrainedClay;
@@ -178,4 +179,80 @@ TEST(UndrainedClay, StrainRateLeftOutChangesNothingElse)
     EXPECT_GT(plasticSteps, 1000);         // the loading went well past yield
     EXPECT_GT(xa, 1.0);                    // and remoulded: below the intact strength at its rate
     EXPECT_LT(suA, 0.9*c.strength.s_uo*c.strength.rateFactor(rateA));
+}
+
+namespace
+{
+
+// Steady simple shear at gdot under strainRate previousPlastic, fed back as the
+// integrator does: the mean sqrt(J2) and plastic rate over the second half of
+// `steps` steps of dt, and how many yielding steps followed an elastic one (at
+// which su must be s_uo).
+struct LaggedShear { double meanTau = 0.0, meanRate = 0.0; int steps = 0, afterElastic = 0; };
+LaggedShear laggedShear(const UndrainedClay& c, double gdot, double dt, int steps)
+{
+    const double L[4] = {0.0, gdot, 0.0, 0.0};
+    double sig[4] = {0, 0, 0, 0}, xi = 0.0, su = 0.0, r = 0.0, previousRate = 0.0;
+    LaggedShear out;
+    for (int k = 0; k < steps; ++k)
+    {
+        const double before = previousRate;
+        const double dXi = c.update(L, 0.0, dt, sig, xi, su, r, true, previousRate);
+        previousRate = dXi/dt;
+        if (k < steps/2) continue;
+        ++out.steps;
+        out.meanTau += UndrainedClay::shearStress(sig);
+        out.meanRate += previousRate;
+        if (before == 0.0 && dXi > 0.0)
+        {
+            ++out.afterElastic;
+            EXPECT_NEAR(su, c.strength.s_uo, 1e-9*c.strength.s_uo);
+        }
+    }
+    out.meanTau /= out.steps;
+    out.meanRate /= out.steps;
+    return out;
+}
+
+} // namespace
+
+TEST(UndrainedClay, PreviousStepRateLosesTheRateEffectAsTheStepShrinks)
+{
+    // strainRate previousPlastic: Eq. (1) at the plastic rate of the step before.
+    // A step after an elastic one sees s_uo and yields by the whole overshoot;
+    // the next sees that large rate and stays elastic. Under steady simple shear
+    // the strength alternates and the mean stress sits near s_uo instead of the
+    // s_u(gdot) that the rate solved with the return gives
+    // (RateCurveFollowsEquation1), the closer the smaller the step: the scheme
+    // loses Eq. (1)'s rate effect as dt -> 0, where the rate solved with the
+    // return converges.
+    const rheology::HerschelBulkleyRemoulding m = material(0.45, 0.23, 1.0, 1.0);
+    UndrainedClay c = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49, true);
+    c.previousStepRate = true;
+    for (double gdot : {0.06, 0.6, 6.0})
+    {
+        const double elasticPerStep = 2.5e-4;   // gdot dt: G gdot dt = 0.8 % of s_uo a step
+        const LaggedShear s = laggedShear(c, gdot, elasticPerStep/gdot, 2000);
+        std::printf("gdot %g, G gdot dt %.3g s_uo: mean sqrt(J2) %.1f Pa (s_uo %.0f, s_u(gdot) %.1f), %d of %d "
+                    "steps yield after an elastic one, mean plastic rate %.4g\n", gdot,
+                    c.shearModulus*elasticPerStep/m.s_uo, s.meanTau, m.s_uo, m.strength(gdot, 0.0), s.afterElastic,
+                    s.steps, s.meanRate);
+        EXPECT_NEAR(s.meanRate, gdot, 0.01*gdot);   // the flow takes the imposed rate on average
+        EXPECT_EQ(2*s.afterElastic, s.steps);      // every other step
+        EXPECT_LT(s.meanTau - m.s_uo, 0.02*(m.strength(gdot, 0.0) - m.s_uo));
+    }
+    // Larger steps keep more of the rate effect (the elastic step after a yield
+    // reaches further up); smaller ones less.
+    const double gdot = 0.6;
+    double previous = 1e300;
+    for (double elasticPerStep : {1e-2, 1e-3, 1e-4})
+    {
+        const LaggedShear s = laggedShear(c, gdot, elasticPerStep/gdot, 4000);
+        std::printf("gdot %g, G gdot dt %.3g s_uo: mean sqrt(J2) %.1f Pa\n", gdot,
+                    c.shearModulus*elasticPerStep/m.s_uo, s.meanTau);
+        EXPECT_LT(s.meanTau, previous);
+        EXPECT_NEAR(s.meanRate, gdot, 0.01*gdot);
+        previous = s.meanTau;
+    }
+    EXPECT_LT(previous - m.s_uo, 0.01*(m.strength(gdot, 0.0) - m.s_uo));
 }
