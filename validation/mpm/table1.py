@@ -50,6 +50,11 @@ def run_case(c, cells, ppc, work, scene=None, numerics=None, tag=""):
     log = p.stdout.decode(errors="replace")
     if p.returncode != 0:
         return {"case": c, "cells": cells, "ppc": ppc, "failed": log[-800:]}
+    return case_result(c, cells, ppc, d)
+
+
+def case_result(c, cells, ppc, d):
+    """The row of table1.json from a finished slideMPM run in case directory d."""
     s = read_summary(os.path.join(d, "postProcessing", "slideMPM", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideMPM", "runout.dat"))
     return {"case": c, "cells": cells, "ppc": ppc, "runout": s["runout_m"], "endTime": s["end_time_s"],
