@@ -222,6 +222,18 @@ int main(int argc, char *argv[])
                 << " heightRatio (or aheadHeightRatio, ahead of the slide) in system/cfdDict and regenerate"
                 << " the case (slideFoamCase)." << exit(FatalError);
         }
+        if (scene.control.stopAtRest && runout.turned())
+        {
+            Info<< "The slide's downslope motion stopped at time " << runTime.timeName()
+                << " s (hydroplaning holds nothing at rest)" << nl << endl;
+            if (!runTime.writeTime())
+            {
+                runTime.writeNow();
+                runout.record();
+            }
+            atRest = true;
+            break;
+        }
         if (scene.control.stopAtRest && runout.atRest())
         {
             Info<< "The slide is at rest (every slide cell slower than "

@@ -259,6 +259,14 @@ bool Foam::functionObjects::slideRunout::execute()
     if (initialVolume_ < 0) initialVolume_ = s.volume;
     state_ = s;
 
+    // As slideMPM and slideDAM end a hydroplaning run where the downslope motion stops.
+    scalar momentum = 0;
+    forAll(colAVU, c) momentum += rho*colAVU[c]/depth_;
+    turned_ = turned_ ||
+        (scene_.interface.type == slide::scene::Interface::Type::hydroplaning
+         && time_.timeIndex() > time_.startTimeIndex() && downslopeMomentum_ > 0 && momentum <= 0);
+    downslopeMomentum_ = momentum;
+
     if (time_.writeTime() || time_.timeIndex() == time_.startTimeIndex())
     {
         if (log_) log_->write(state_.sample);
@@ -284,6 +292,12 @@ bool Foam::functionObjects::slideRunout::execute()
         Info<< endl;
     }
     return true;
+}
+
+
+void Foam::functionObjects::slideRunout::record() const
+{
+    if (log_) log_->write(state_.sample);
 }
 
 

@@ -18,7 +18,8 @@ generated from SlideFoam scenes by slideFoamCase:
   polyline    the flume's slope given as a polyline (vertical columns, gravity
               down: faces not aligned with the axes) runs as the planar scene in
               the slope's frame; over a kink onto a gentler slope it runs shorter;
-              slide area, volume and alpha bounds kept on both
+              slide area, volume and alpha bounds kept on both; a block hydroplaning
+              into an adverse slope stops where its downslope motion first stops
   reconstruction  slideFoam's flux reconstruction returns a uniform velocity from
               its face fluxes to round-off on a mesh rotated 3.43 deg (fvc::reconstruct
               of Debian's v1912 build does not: fluxReconstruction.H) and on the
@@ -259,8 +260,8 @@ def test_parallel(work):
           % (du, 100*du/umax))
 
 
-def polyline_case(work, name, points, scene=None, interface=None, end=2.0):
-    c = make_case(FLUME, work, name, scene=scene, control={"endTime": end, "writeInterval": 0.5},
+def polyline_case(work, name, points, scene=None, interface=None, end=2.0, control=None):
+    c = make_case(FLUME, work, name, scene=scene, control=dict({"endTime": end, "writeInterval": 0.5}, **(control or {})),
                   cfd={"cellsPerHeight": 10, "reach": 3})
     p = os.path.join(c, "constant", "sceneProperties")
     text = open(p).read()
@@ -330,6 +331,32 @@ def test_polyline(work):
     following = front - length
     check(abs(travel/following - 1) < 0.08, "strong block over a kink (3.43 to 1.7 deg), frictionless: front moved "
           "%.3f m in 1.5 s, a block following the base %.3f m (within 8 %%)" % (travel, following))
+
+    # The same block on a hydroplaning base (s_b = 0.5 rho_w C_F V^2) that turns
+    # into an adverse 5 deg slope: the water film holds nothing at rest, so the
+    # run must end where the block's downslope motion first stops, as slideMPM
+    # and slideDAM end it, not slide back and forth until endTime.
+    up = np.tan(np.radians(5.0))
+    climb = polyline_case(work, "polyline_block_hydroplaning", [(0, 0), (2.4, -2.4*t), (8, -2.4*t + 5.6*up)],
+                          scene={"s_uo": 2000, "rearWall": "no"}, interface="interface hydroplaning;\n    C_F 0.5;",
+                          end=8.0, control={"stopAtRest": "yes"})
+    run_slidefoam(climb)
+    r, s = runout(climb), summary(climb)
+    rho, H, L, C_F = 1073.0, 0.3, 1.8, 0.5
+    sk = 2.4/np.cos(np.arctan(t))
+    front, speed, time = L, 0.0, 0.0
+    while speed > 0 or time < 0.1:
+        past = min(max((front - sk)/L, 0.0), 1.0)
+        speed += (9.81*((1 - past)*np.sin(np.arctan(t)) - past*np.sin(np.arctan(up)))
+                  - 0.5*1000.0*C_F*speed**2/(rho*H))*dt
+        front += speed*dt
+        time += dt
+    check(s["at_rest"] and s["end_time_s"] < 7.0, "hydroplaning block climbing 5 deg: the run ends where its "
+          "downslope motion stops, at %.2f s (a block following the base: %.2f s), at rest %s"
+          % (s["end_time_s"], time, s["at_rest"]))
+    check(abs(s["runout_m"]/(front - L) - 1) < 0.08, "hydroplaning block climbing 5 deg: front stopped %.3f m from "
+          "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], front - L))
+    check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6, "the state where it stopped is the last row of runout.dat")
 
 
 FOAM_HEADER = "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object %s;\n}\n"
