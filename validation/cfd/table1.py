@@ -6,7 +6,7 @@ table1.md (the paper's CFD/DAM/MPM runouts, slideFoam's per mesh, the error
 against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
-                                 [--scene-end] [--ahead-height 0.75] [--replot]
+                                 [--scene-end] [--ahead-height 0.75] [--max-co 0.25] [--replot]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
 import json
@@ -31,14 +31,16 @@ def fatal_error(log):
     return m.group(1).strip() if m else None
 
 
-def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None, retries=2, ahead_height=None):
+def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None, retries=2, ahead_height=None,
+             max_co=None):
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement, "processors": processors}
     if ahead_height:
         cfd["aheadHeightRatio"] = ahead_height
     if reach:
         cfd["reach"] = "%.1f" % reach
-    d = make_case(src, work, "case%02d_H0_%d" % (c, cells), cfd=cfd)
+    control = {"maxCo": max_co, "maxAlphaCo": max_co} if max_co else None
+    d = make_case(src, work, "case%02d_H0_%d" % (c, cells), cfd=cfd, control=control)
     run(d, which("slideDAM"), "-case", ".")
     dam = read_summary(os.path.join(d, "postProcessing", "slideDAM", "summary.json"))
     if dam["at_rest"] and not scene_end:
@@ -57,15 +59,16 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
             front = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))["front"][-1]
             print("Case %d H0/%d: the front left the mesh at %.1f m; rerunning with reach %.1f m"
                   % (c, cells, front, 3.0*front), flush=True)
-            return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1, ahead_height)
+            return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1, ahead_height,
+                            max_co)
         return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "refinement": refinement,
-                "ahead_height": ahead_height}
+                "ahead_height": ahead_height, "max_co": max_co}
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
             "wall": s["wall_time_s"], "n": s["problem_size"], "volume_change": s["volume_relative_change"],
             "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], "refinement": refinement, "reach": reach,
-            "ahead_height": ahead_height,
+            "ahead_height": ahead_height, "max_co": max_co,
             "front_velocity": float(r["frontVelocity"][-1]), "max_velocity": float(r["maxVelocity"][-1]),
             "history": [[float(t), float(f)] for t, f in zip(r["time"], r["front"])]}
 
@@ -83,6 +86,8 @@ def main():
     ap.add_argument("--ahead-height", type=float, default=None,
                     help="mesh height over H0 from H0 ahead of the slide on (cfdDict aheadHeightRatio; default: "
                          "the full height): the long weak slides, which thin as they run out")
+    ap.add_argument("--max-co", type=float, default=None,
+                    help="maxCo and maxAlphaCo of the run (default: the tutorial's controlDict, 0.5)")
     ap.add_argument("--replot", action="store_true", help="rewrite table1.md and table1.png from table1.json, "
                     "running nothing")
     args = ap.parse_args()
@@ -95,7 +100,7 @@ def main():
     for c in cases:
         for n in cells:
             r = run_case(c, n, args.base_refinement, args.processors, work, args.scene_end,
-                         ahead_height=args.ahead_height)
+                         ahead_height=args.ahead_height, max_co=args.max_co)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
     if args.keep and os.path.exists(os.path.join(here, "table1.json")):
@@ -118,6 +123,8 @@ def main():
                                        else "")
         if r.get("ahead_height"):
             mesh += ", %g H0 high ahead" % r["ahead_height"]
+        if r.get("max_co"):
+            mesh += ", maxCo %g" % r["max_co"]
         if "failed" in r:
             lines.append("| %d | %s | | %s | failed: %s | | | | | | | |"
                          % (r["case"], mesh, cfd or "-", r.get("reason") or "see the run's log"))
