@@ -29,6 +29,10 @@ from cfdcase import set_entry, set_method_entries  # noqa: E402
 # Case 11 (S_t = 40) moves by shear bands, and at H0/10-H0/20 a cell is too coarse for more than one
 # to form (shearBand.md); H0/40 is the coarsest at which its slide parts into horsts and grabens.
 FINE = {11: (40, 2)}
+# The remoulding cases, whose mechanism the detector's remoulded-film rule (session 25) can change: a row run
+# before it says so.
+FILM_SENSITIVE = (10, 11, 12, 13)
+OLD_DETECTOR = " (mechanism from the detector before session 25, which parted bodies by empty columns only)"
 
 
 def run_case(c, cells, ppc, work, scene=None, numerics=None, tag=""):
@@ -63,6 +67,9 @@ def case_result(c, cells, ppc, d):
             "mech30": mechanism_at(s, 30.0),
             "baseContact": s.get("base_contact", "withinCell"),
             "baseRowMassScaling": s.get("base_row_mass_scaling"),
+            # Absent: the mechanism came from the detector before session 25, which parted bodies by empty columns
+            # only (a no-slip base keeps a remoulded film between bodies that slid apart).
+            "breakawayFilm": s.get("breakaway_film_height_m"),
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
             "maxVelocity": float(r["maxVelocity"][-1]),
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}
@@ -136,6 +143,8 @@ def main():
                 extra = "; 10 s: %s, 30 s: %s" % (res["mech10"], res["mech30"])
             if c == 12:
                 extra = "; shear band %s" % res["shearBand"]
+            if res.get("breakawayFilm") is None and c in FILM_SENSITIVE:
+                extra += OLD_DETECTOR
             row += " %.1f%s | %s | %s%s | %.0f s |" % (res["runout"], state, err, res["mechanism"], extra, res["wall"])
         lines.append(row)
     # The stored runs at FINE's cell or finer (the paper's H0/60 among them) are shown too.
@@ -145,10 +154,11 @@ def main():
         lines += ["", "Cases whose mechanism needs a finer cell (`--fine`):", ""]
         for c, r in fine:
             lines.append("- Case %d at H0/%d, %dx%d particles: %.1f m%s; mechanism %s; 10 s: %s, 30 s: %s; "
-                         "shear band %s; %.0f s" % (
+                         "shear band %s; %.0f s%s" % (
                              c, r["cells"], r["ppc"], r["ppc"], r["runout"],
                              "" if r["atRest"] else " (moving, t = %g s)" % r["endTime"], r["mechanism"],
-                             r["mech10"], r["mech30"], r["shearBand"], r["wall"]))
+                             r["mech10"], r["mech30"], r["shearBand"], r["wall"],
+                             OLD_DETECTOR if r.get("breakawayFilm") is None else ""))
     with open(os.path.join(here, "table1.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

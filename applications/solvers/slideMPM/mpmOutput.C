@@ -184,13 +184,49 @@ Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const do
         bottom[c] = std::min(bottom[c], h - hp.halfExtent(p, 1));
     }
     // Bodies: runs of occupied columns separated by at least two empty ones (2 H0/5).
-    int empty = 0;
+    // On a base that holds what touches it (no-slip), a body sliding away on its
+    // remoulded basal band leaves the band behind as a film, so the columns
+    // between never empty: a remoulded film (below H0/20, half its strength lost)
+    // over two columns or more also parts a run, where the parts on both sides
+    // reach H0/5 (slabs, not the film's own ripples or a thin tongue).
+    std::vector<std::vector<double>> columnXi(nCol);
+    if (material.deltaRem < 1.0)
+    {
+        for (int p = 0; p < hp.count; ++p)
+        {
+            const int c = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
+            columnXi[c].push_back(hp.xi(p));
+        }
+    }
+    auto remouldedFilm = [&](int c)
+    {
+        return material.deltaRem < 1.0 && top[c] >= 0.0 && top[c] < remouldedFilmHeight*H0
+            && (material.remouldingFactor(median(columnXi[c])) - material.deltaRem)/(1.0 - material.deltaRem) <= 0.5;
+    };
+    m.bodies = 0;
+    int empty = 2, gap = 2, slabs = 0;
+    bool slab = false;                 // the part since the last gap reaches H0/5
+    auto endPart = [&]() { if (slab) ++slabs; slab = false; };
     for (int c = 0; c < nCol; ++c)
     {
-        if (top[c] < 0.0) { ++empty; continue; }
-        if (empty >= 2) ++m.bodies;
+        if (top[c] < 0.0 || remouldedFilm(c))
+        {
+            empty = top[c] < 0.0 ? empty + 1 : 0;
+            if (++gap == 2) endPart();
+            continue;
+        }
+        if (empty >= 2)
+        {
+            // A run parted from the last by empty columns: its slabs, or itself.
+            m.bodies += std::max(slabs, 1)*(c > 0 ? 1 : 0);
+            slabs = 0;
+        }
+        slab = slab || top[c] >= 0.2*H0;
         empty = 0;
+        gap = 0;
     }
+    endPart();
+    m.bodies += std::max(slabs, 1);
     // Grabens: surface depressions deeper than H0/5 below the crests on both sides
     // (crests = running maxima within 2 H0), found on the column tops.
     const int reach = std::max(2, static_cast<int>(std::ceil(2.0*H0/width)));

@@ -325,6 +325,7 @@ int main(int argc, char** argv)
         summary.addString("final_state_mechanism", mech.name);
         summary.addString("shear_band", mech.shearBand);
         summary.addNumber("bodies", mech.bodies);
+        summary.addNumber("breakaway_film_height_m", mpm::remouldedFilmHeight*H0);
         summary.addNumber("grabens", mech.grabens);
         summary.addNumber("horsts", mech.horsts);
         summary.addNumber("basal_slip_ratio", mech.basalSlipRatio);

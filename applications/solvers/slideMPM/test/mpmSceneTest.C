@@ -35,6 +35,16 @@ mpm::MpmControls withYoungsModulus(mpm::MpmControls c, const double E, const dou
     return c;
 }
 
+// Table 1 Case 11's slide: 40 m x 5 m, 5 kPa, very sensitive (S_t = 40, xi95 = 10), no rate effect.
+scene::Scene case11Scene()
+{
+    scene::Interface iface;
+    scene::Scene sc = blockScene(3.43, 40.0, 5.0, 600.0, 5000.0, iface);
+    sc.rheology.deltaRem = 0.025;
+    sc.rheology.xi95 = 10.0;
+    return sc;
+}
+
 struct SceneRun
 {
     scene::Scene sc;
@@ -563,10 +573,7 @@ TEST(SlideMPM, HorstsAreIntactBlocksPartedByRemouldedMaterial)
     // the body in two 3 m bands, intact elsewhere, is three horsts (spreading);
     // remoulded in the basal layer only, one intact body; no remoulding in the
     // material, no horsts whatever xi says.
-    scene::Interface iface;
-    scene::Scene sc = blockScene(3.43, 40.0, 5.0, 600.0, 5000.0, iface);
-    sc.rheology.deltaRem = 0.025;
-    sc.rheology.xi95 = 10.0;
+    const scene::Scene sc = case11Scene();
     SceneRun r(sc, controls(5, 2), 100.0*sc.rheology.s_uo);
     const double H0 = sc.slide.height, d = H0/5.0;
     auto withXi = [&](bool throughBody)
@@ -598,6 +605,50 @@ TEST(SlideMPM, HorstsAreIntactBlocksPartedByRemouldedMaterial)
     EXPECT_EQ(mpm::detectMechanism(mpm::HostPoints(r.points), r.frame, H0, sc.g, d, intact.rheology).horsts, 0);
 }
 
+TEST(SlideMPM, RemouldedFilmOnTheBasePartsBodies)
+{
+    // Case 11's slide at H0/20, its middle 10 m brought down to the lowest
+    // particle row (a film 0.125 m high, below H0/20 = 0.25 m): a body that slid
+    // away on its remoulded band leaves the band on a no-slip base, so the
+    // columns between never empty. Remoulded, the film parts the two slabs
+    // (breakaway); intact, or in a material that does not remould, it joins them;
+    // a remoulded film one column (1 m) long parts nothing.
+    const scene::Scene sc = case11Scene();
+    SceneRun r(sc, controls(20, 2), 100.0*sc.rheology.s_uo);
+    const double H0 = sc.slide.height, d = H0/20.0;
+    const mpm::HostPoints seeded(r.points);
+    const double rear = seeded.rearX(), lowest = 0.5*seeded.spacing;
+    auto film = [&](double from, double to, double filmXi)
+    {
+        auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.position);
+        auto xi = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.points.plasticShearStrain);
+        for (int p = 0; p < seeded.count; ++p)
+        {
+            const double s = seeded.position(p, 0) - rear;
+            const bool inFilm = s >= from && s < to;
+            x(p, 1) = inFilm ? lowest : seeded.position(p, 1);
+            xi(p) = inFilm ? filmXi : 0.0;
+        }
+        Kokkos::deep_copy(r.points.position, x);
+        Kokkos::deep_copy(r.points.plasticShearStrain, xi);
+    };
+    auto detect = [&](const rheology::HerschelBulkleyRemoulding& material)
+    {
+        return mpm::detectMechanism(mpm::HostPoints(r.points), r.frame, H0, sc.g, d, material);
+    };
+    film(15.0, 25.0, 100.0);
+    const mpm::Mechanism parted = detect(sc.rheology);
+    EXPECT_EQ(parted.bodies, 2);
+    EXPECT_EQ(parted.name, "breakaway");
+    scene::Scene intact = sc;
+    intact.rheology.deltaRem = 1.0;
+    EXPECT_EQ(detect(intact.rheology).bodies, 1);
+    film(15.0, 25.0, 0.0);
+    EXPECT_EQ(detect(sc.rheology).bodies, 1);
+    film(15.0, 16.0, 100.0);
+    EXPECT_EQ(detect(sc.rheology).bodies, 1);
+}
+
 int main(int argc, char** argv)
 {
     ::testing::InitGoogleTest(&argc, argv);
@@ -614,10 +665,7 @@ TEST(SlideMPM, ShearBandThicknessRemouldsTwoMeshesAlike)
     // (the paper's cell), H0/10 and H0/20 agree far better. (H0/40, where more bands fit
     // in the slide, parted from both where the base cut the grid: 12.0 m at 3 s;
     // validation/mpm/shearBand.md.)
-    scene::Interface iface;
-    scene::Scene sc = blockScene(3.43, 40.0, 5.0, 600.0, 5000.0, iface);
-    sc.rheology.deltaRem = 0.025;
-    sc.rheology.xi95 = 10.0;
+    const scene::Scene sc = case11Scene();
     auto travel = [&](int cellsPerHeight, double band)
     {
         mpm::MpmControls c = controls(cellsPerHeight, 2);
