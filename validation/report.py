@@ -255,9 +255,10 @@ def field_section(field):
         return [], {}
     lines = ["### Field cases", "",
              "The tutorials' runs (`field/runs.py`), all three methods on the polyline bases (slideFoam on vertical "
-             "columns, gravity down). slideFoam runs the Finneidfjord block to 60 s only (`system/cfdDict` endTime): "
-             "its runout is where the block was then (`cfd/README.md`); the line under the table gives the other "
-             "methods' fronts at that time. Geometry and its sensitivity: `field/sensitivity.md`.", "",
+             "columns, gravity down). On the Finneidfjord base all three end where the hydroplaning block's downslope "
+             "motion first stops (the water film holds nothing at rest). A run that ends before rest is compared "
+             "with the others' fronts at its end time, in a line under the table. Geometry and its sensitivity: "
+             "`field/sensitivity.md`.", "",
              "| case | paper / observed [m] | method | runout [m] | peak front velocity [m/s] | mechanism | wall [s] |",
              "|---|---|---|---|---|---|---|"]
     hist = {}
