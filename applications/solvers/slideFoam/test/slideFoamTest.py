@@ -276,6 +276,20 @@ def polyline_case(work, name, points, scene=None, interface=None, end=2.0, contr
     return c
 
 
+def block_following_base(s_kink, angle1, angle2, drag=lambda v: 0.0, end=None, length=1.8, height=0.3,
+                         rho=1073.0, dt=1e-4):
+    """A rigid block (the flume slurry made strong) from rest, following a base that turns from angle1 to angle2
+    (downslope positive, radians) s_kink along it, its front starting at `length`, with a basal traction drag(V):
+    its front's travel and the time, at `end` or, without one, where its downslope motion first stops."""
+    front, speed, time = length, 0.0, 0.0
+    while (time < end - 0.5*dt) if end is not None else (speed > 0 or time < 0.1):
+        past = min(max((front - s_kink)/length, 0.0), 1.0)   # share of the block past the kink
+        speed += (9.81*((1 - past)*np.sin(angle1) + past*np.sin(angle2)) - drag(speed)/(rho*height))*dt
+        front += speed*dt
+        time += dt
+    return front - length, time
+
+
 def test_polyline(work):
     t = np.tan(np.radians(3.43))
     planar = flume_case(work, "polyline_planar", end=2.0, write=0.5)
@@ -322,13 +336,7 @@ def test_polyline(work):
                          scene={"s_uo": 2000, "rearWall": "no"}, interface="interface frictional;\n    s_b 0;", end=1.5)
     run_slidefoam(kink)
     travel = runout(kink)["front"][-1]
-    sk, length, dt = 1.5/np.cos(np.arctan(t)), 1.8, 1e-4
-    front, speed = length, 0.0
-    for _ in range(int(round(1.5/dt))):
-        past = min(max((front - sk)/length, 0.0), 1.0)   # share of the block on the gentler slope
-        speed += 9.81*((1 - past)*np.sin(np.arctan(t)) + past*np.sin(np.arctan(t2)))*dt
-        front += speed*dt
-    following = front - length
+    following, _ = block_following_base(1.5/np.cos(np.arctan(t)), np.arctan(t), np.arctan(t2), end=1.5)
     check(abs(travel/following - 1) < 0.08, "strong block over a kink (3.43 to 1.7 deg), frictionless: front moved "
           "%.3f m in 1.5 s, a block following the base %.3f m (within 8 %%)" % (travel, following))
 
@@ -342,20 +350,13 @@ def test_polyline(work):
                           end=8.0, control={"stopAtRest": "yes"})
     run_slidefoam(climb)
     r, s = runout(climb), summary(climb)
-    rho, H, L, C_F = 1073.0, 0.3, 1.8, 0.5
-    sk = 2.4/np.cos(np.arctan(t))
-    front, speed, time = L, 0.0, 0.0
-    while speed > 0 or time < 0.1:
-        past = min(max((front - sk)/L, 0.0), 1.0)
-        speed += (9.81*((1 - past)*np.sin(np.arctan(t)) - past*np.sin(np.arctan(up)))
-                  - 0.5*1000.0*C_F*speed**2/(rho*H))*dt
-        front += speed*dt
-        time += dt
+    travel, time = block_following_base(2.4/np.cos(np.arctan(t)), np.arctan(t), -np.arctan(up),
+                                        drag=lambda v: 0.5*1000.0*0.5*v**2)   # rho_w, C_F 0.5
     check(s["at_rest"] and s["end_time_s"] < 7.0, "hydroplaning block climbing 5 deg: the run ends where its "
           "downslope motion stops, at %.2f s (a block following the base: %.2f s), at rest %s"
           % (s["end_time_s"], time, s["at_rest"]))
-    check(abs(s["runout_m"]/(front - L) - 1) < 0.08, "hydroplaning block climbing 5 deg: front stopped %.3f m from "
-          "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], front - L))
+    check(abs(s["runout_m"]/travel - 1) < 0.08, "hydroplaning block climbing 5 deg: front stopped %.3f m from "
+          "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], travel))
     check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6, "the state where it stopped is the last row of runout.dat")
 
 
