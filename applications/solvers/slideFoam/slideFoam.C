@@ -185,10 +185,7 @@ int main(int argc, char *argv[])
             #include "UEqn.H"
 
             // --- Pressure corrector loop
-            while (pimple.correct())
-            {
-                #include "pEqn.H"
-            }
+            #include "pressureCorrectors.H"
 
             if (pimple.turbCorr())
             {

@@ -11,6 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling",
+                      "conservePlugMomentum",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -58,6 +59,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.pressureCoupling = d.getWordOneOf("pressureCoupling", {"simplec", "piso"});
     }
+    c.conservePlugMomentum = d.getBool("conservePlugMomentum", false);
     if (d.found("plugCreepRate"))
     {
         c.plugCreepRate = d.getScalarInRange("plugCreepRate", 0.0, 1e3, false, true, "plug creep rate [1/s]");
@@ -87,6 +89,7 @@ std::string CfdControls::describe() const
     os << ", height " << heightRatio << " H0";
     if (aheadHeightRatio < heightRatio) os << " (" << aheadHeightRatio << " H0 from H0 ahead of the slide on)";
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
+       << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";
     return os.str();

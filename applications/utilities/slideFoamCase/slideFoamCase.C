@@ -242,7 +242,9 @@ int main(int argc, char** argv)
         const std::string baseU = sc.interface.type == scene::Interface::Type::noSlip
             ? "        type            noSlip;\n"
             : "        type            slideBaseVelocity;   // " + sc.interface.typeName()
-              + " base from constant/sceneProperties\n        value           uniform (0 0 0);\n";
+              + " base from constant/sceneProperties\n"
+              + (c.conservePlugMomentum ? "        transposeShear  runningMean;   // cfdDict conservePlugMomentum\n" : "")
+              + "        value           uniform (0 0 0);\n";
         const std::string rearU = sc.slide.rearWall ? "        type            noSlip;\n"
             : "        type            pressureInletOutletVelocity;\n        value           uniform (0 0 0);\n";
         {
@@ -361,7 +363,8 @@ PIMPLE
     momentumPredictor   yes;
     nOuterCorrectors    1;
     nCorrectors         3;
-    nNonOrthogonalCorrectors 0;
+)" + std::string(c.conservePlugMomentum ?
+"    // cfdDict conservePlugMomentum: correctors 2 and 3 give back the momentum they take.\n    restoreCorrectorMomentum yes;\n" : "") + R"(    nNonOrthogonalCorrectors 0;
 )" + std::string(c.pressureCoupling == "simplec" ?
 "    // SIMPLEC: the pressure moves a plug whole (cfdDict pressureCoupling).\n    consistent          yes;\n" :
 "    consistent          no;\n") + R"(}

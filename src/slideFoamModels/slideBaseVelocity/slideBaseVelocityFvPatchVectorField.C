@@ -3,6 +3,9 @@
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "fvcGrad.H"
+#include "ListListOps.H"
+#include "SortableList.H"
+#include <algorithm>
 
 void Foam::slideBaseVelocityFvPatchVectorField::setStuck()
 {
@@ -17,7 +20,8 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     const fvPatch& p, const DimensionedField<vector, volMesh>& iF
 )
 :
-    directionMixedFvPatchVectorField(p, iF)
+    directionMixedFvPatchVectorField(p, iF),
+    transposeShearMean_(false)
 {
     setStuck();
 }
@@ -28,9 +32,17 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     const fvPatch& p, const DimensionedField<vector, volMesh>& iF, const dictionary& dict
 )
 :
-    directionMixedFvPatchVectorField(p, iF)
+    directionMixedFvPatchVectorField(p, iF),
+    transposeShearMean_(false)
 {
     setStuck();
+    const word shear = dict.getOrDefault<word>("transposeShear", "nearKinks");
+    if (shear != "nearKinks" && shear != "runningMean")
+    {
+        FatalIOErrorInFunction(dict)
+            << "key 'transposeShear': expected nearKinks or runningMean, got " << shear << exit(FatalIOError);
+    }
+    transposeShearMean_ = (shear == "runningMean");
     if (dict.found("value"))
     {
         fvPatchVectorField::operator=(vectorField("value", dict, p.size()));
@@ -48,7 +60,8 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     const DimensionedField<vector, volMesh>& iF, const fvPatchFieldMapper& mapper
 )
 :
-    directionMixedFvPatchVectorField(ptf, p, iF, mapper)
+    directionMixedFvPatchVectorField(ptf, p, iF, mapper),
+    transposeShearMean_(ptf.transposeShearMean_)
 {}
 
 
@@ -57,7 +70,8 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     const slideBaseVelocityFvPatchVectorField& ptf, const DimensionedField<vector, volMesh>& iF
 )
 :
-    directionMixedFvPatchVectorField(ptf, iF)
+    directionMixedFvPatchVectorField(ptf, iF),
+    transposeShearMean_(ptf.transposeShearMean_)
 {}
 
 
@@ -177,16 +191,75 @@ Foam::tmp<Foam::vectorField> Foam::slideBaseVelocityFvPatchVectorField::transpos
     const tensorField& gradUf, const scalarField& muf
 ) const
 {
+    const vectorField& Sf = patch().Sf();
+    const scalarField& magSf = patch().magSf();
+    const vectorField n(patch().nf());
+    const vectorField& centres = patch().Cf();
+    const boolList& bent = bendZone();
+
     tmp<vectorField> tflux(new vectorField(size(), Zero));
     vectorField& flux = tflux.ref();
-    const vectorField& Sf = patch().Sf();
-    const vectorField n(patch().nf());
-    const boolList& bent = bendZone();
+
+    // The shear traction of the transpose flux on each slipping face: taken out
+    // whole near a kink, gathered for its running mean elsewhere.
+    DynamicList<scalar> x(size());
+    DynamicList<vector> traction(size());
+    DynamicList<scalar> area(size());
+    forAll(Sf, facei)
+    {
+        if (!slipping(valueFraction()[facei])) continue;
+        const vector f = muf[facei]*(Sf[facei] & dev2(Foam::T(gradUf[facei])));
+        const vector shear = f - n[facei]*(n[facei] & f);
+        if (bent[facei])
+        {
+            flux[facei] = shear;
+            continue;
+        }
+        if (!transposeShearMean_) continue;
+        x.append(centres[facei].x());
+        traction.append(shear/magSf[facei]);
+        area.append(magSf[facei]);
+    }
+    if (!transposeShearMean_) return tflux;   // the same on every rank: the patch's own entry
+
+    // Its running mean over the base within H0 either side, gathered over all
+    // ranks so that serial and parallel runs take out the same flux. The base
+    // is a function of x in both the slope frame and a polyline's frame.
+    List<scalarList> allX(Pstream::nProcs());
+    List<List<vector>> allTraction(Pstream::nProcs());
+    List<scalarList> allArea(Pstream::nProcs());
+    allX[Pstream::myProcNo()] = x;
+    allTraction[Pstream::myProcNo()] = traction;
+    allArea[Pstream::myProcNo()] = area;
+    Pstream::gatherList(allX);
+    Pstream::gatherList(allTraction);
+    Pstream::gatherList(allArea);
+    Pstream::scatterList(allX);
+    Pstream::scatterList(allTraction);
+    Pstream::scatterList(allArea);
+    const scalarField gx(ListListOps::combine<scalarList>(allX, accessOp<scalarList>()));
+    const vectorField gt(ListListOps::combine<List<vector>>(allTraction, accessOp<List<vector>>()));
+    const scalarField ga(ListListOps::combine<scalarList>(allArea, accessOp<scalarList>()));
+    const labelList order(sortedOrder(gx));
+    scalarList sortedX(order.size());
+    List<vector> forceSum(order.size() + 1, Zero);
+    scalarList areaSum(order.size() + 1, Zero);
+    forAll(order, k)
+    {
+        sortedX[k] = gx[order[k]];
+        forceSum[k + 1] = forceSum[k] + gt[order[k]]*ga[order[k]];
+        areaSum[k + 1] = areaSum[k] + ga[order[k]];
+    }
+
+    const scalar halfWidth = slideSceneObject::New(db()).slide.height;
     forAll(flux, facei)
     {
-        if (!bent[facei] || !slipping(valueFraction()[facei])) continue;
-        const vector f = muf[facei]*(Sf[facei] & dev2(Foam::T(gradUf[facei])));
-        flux[facei] = f - n[facei]*(n[facei] & f);
+        if (bent[facei] || !slipping(valueFraction()[facei])) continue;
+        const scalar xi = centres[facei].x();
+        const label lo = std::lower_bound(sortedX.begin(), sortedX.end(), xi - halfWidth) - sortedX.begin();
+        const label hi = std::upper_bound(sortedX.begin(), sortedX.end(), xi + halfWidth) - sortedX.begin();
+        const vector mean = (forceSum[hi] - forceSum[lo])/max(areaSum[hi] - areaSum[lo], VSMALL);
+        flux[facei] = (mean - n[facei]*(n[facei] & mean))*magSf[facei];
     }
     return tflux;
 }
@@ -212,10 +285,9 @@ Foam::tmp<Foam::volVectorField::Internal> Foam::slideBaseVelocityFvPatchVectorFi
     {
         const auto* base = isA<slideBaseVelocityFvPatchVectorField>(U.boundaryField()[patchi]);
         if (!base) continue;
-        const boolList& bent = base->bendZone();
-        forAll(bent, facei)
+        forAll(*base, facei)
         {
-            if (bent[facei] && slipping(base->valueFraction()[facei])) { anySlip = true; break; }
+            if (slipping(base->valueFraction()[facei])) { anySlip = true; break; }
         }
     }
     // grad(U) communicates across processor patches: every rank evaluates it or none.
@@ -244,6 +316,7 @@ Foam::tmp<Foam::volVectorField::Internal> Foam::slideBaseVelocityFvPatchVectorFi
 void Foam::slideBaseVelocityFvPatchVectorField::write(Ostream& os) const
 {
     fvPatchVectorField::write(os);
+    if (transposeShearMean_) os.writeEntry("transposeShear", word("runningMean"));
     writeEntry("value", os);
 }
 

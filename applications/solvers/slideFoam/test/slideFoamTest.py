@@ -260,9 +260,9 @@ def test_parallel(work):
           % (du, 100*du/umax))
 
 
-def polyline_case(work, name, points, scene=None, interface=None, end=2.0, control=None):
+def polyline_case(work, name, points, scene=None, interface=None, end=2.0, control=None, cfd=None):
     c = make_case(FLUME, work, name, scene=scene, control=dict({"endTime": end, "writeInterval": 0.5}, **(control or {})),
-                  cfd={"cellsPerHeight": 10, "reach": 3})
+                  cfd=dict({"cellsPerHeight": 10, "reach": 3}, **(cfd or {})))
     p = os.path.join(c, "constant", "sceneProperties")
     text = open(p).read()
     i = text.index("profile   planar;")
@@ -358,6 +358,22 @@ def test_polyline(work):
     check(abs(s["runout_m"]/travel - 1) < 0.08, "hydroplaning block climbing 5 deg: front stopped %.3f m from "
           "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], travel))
     check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6, "the state where it stopped is the last row of runout.dat")
+
+    # cfdDict conservePlugMomentum (the Finneidfjord tutorial's): the momentum the
+    # 2nd and 3rd pressure correctors take is given back and the running mean of the
+    # base's transpose shear traction taken out. The same block hydroplaning down the
+    # straight 3.43 deg polyline must still follow the rigid-block law with that drag.
+    glide = polyline_case(work, "polyline_block_conserved", [(0, 0), (8, -8*t)],
+                          scene={"s_uo": 2000, "rearWall": "no"}, interface="interface hydroplaning;\n    C_F 0.5;",
+                          end=1.5, cfd={"conservePlugMomentum": "yes"})
+    check("restoreCorrectorMomentum yes;" in open(os.path.join(glide, "system", "fvSolution")).read()
+          and "transposeShear  runningMean;" in open(os.path.join(glide, "0.orig", "U")).read(),
+          "conservePlugMomentum yes writes restoreCorrectorMomentum (fvSolution) and transposeShear runningMean (0/U)")
+    run_slidefoam(glide)
+    travel = runout(glide)["front"][-1]
+    law, _ = block_following_base(8.0, np.arctan(t), np.arctan(t), drag=lambda v: 0.5*1000.0*0.5*v**2, end=1.5)
+    check(abs(travel/law - 1) < 0.08, "strong block hydroplaning down 3.43 deg with conservePlugMomentum: front moved "
+          "%.3f m in 1.5 s, the rigid-block law %.3f m (within 8 %%)" % (travel, law))
 
 
 FOAM_HEADER = "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object %s;\n}\n"
