@@ -4,7 +4,6 @@
 #include "volFields.H"
 #include "fvcGrad.H"
 #include "ListListOps.H"
-#include "SortableList.H"
 #include <algorithm>
 
 void Foam::slideBaseVelocityFvPatchVectorField::setStuck()
@@ -285,9 +284,15 @@ Foam::tmp<Foam::volVectorField::Internal> Foam::slideBaseVelocityFvPatchVectorFi
     {
         const auto* base = isA<slideBaseVelocityFvPatchVectorField>(U.boundaryField()[patchi]);
         if (!base) continue;
-        forAll(*base, facei)
+        const boolList& bent = base->bendZone();
+        forAll(bent, facei)
         {
-            if (slipping(base->valueFraction()[facei])) { anySlip = true; break; }
+            // Default (nearKinks): only the faces near a kink take anything out.
+            if ((bent[facei] || base->transposeShearMean_) && slipping(base->valueFraction()[facei]))
+            {
+                anySlip = true;
+                break;
+            }
         }
     }
     // grad(U) communicates across processor patches: every rank evaluates it or none.
