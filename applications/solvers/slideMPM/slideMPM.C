@@ -181,6 +181,7 @@ int main(int argc, char** argv)
         // to fall below restVelocity together.
         const bool hydroplaning = sc.interface.type == scene::Interface::Type::hydroplaning;
         bool turned = false;
+        bool moved = false;   // a turn needs motion first: the slide's mean downslope speed above restVelocity
         bool warnedPastBase = false;
         while (schedule.running(t))
         {
@@ -237,7 +238,8 @@ int main(int argc, char** argv)
             }
             // Slow is not rest while accelerating: a slide released under a small net force starts slowly.
             slowingDown = next.maxSpeed <= stats.maxSpeed;
-            turned = turned || (hydroplaning && stats.momentumX > 0.0 && next.momentumX <= 0.0);
+            moved = moved || next.momentumX > rc.restVelocity*initialMass;
+            turned = turned || (hydroplaning && moved && stats.momentumX > 0.0 && next.momentumX <= 0.0);
             stats = next;
             if (!warnedPastBase)
             {

@@ -262,8 +262,11 @@ bool Foam::functionObjects::slideRunout::execute()
     // As slideMPM and slideDAM end a hydroplaning run where the downslope motion stops.
     scalar momentum = 0;
     forAll(colAVU, c) momentum += rho*colAVU[c]/depth_;
+    // A turn needs motion first: released at rest, the first steps' momentum is of
+    // round-off size and may change sign (it did at 6 ms on the Finneidfjord block).
+    moved_ = moved_ || momentum > scene_.control.restVelocity*s.sample.mass;
     turned_ = turned_ ||
-        (scene_.interface.type == slide::scene::Interface::Type::hydroplaning
+        (scene_.interface.type == slide::scene::Interface::Type::hydroplaning && moved_
          && time_.timeIndex() > time_.startTimeIndex() && downslopeMomentum_ > 0 && momentum <= 0);
     downslopeMomentum_ = momentum;
 
