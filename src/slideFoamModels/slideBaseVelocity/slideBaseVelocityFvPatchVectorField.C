@@ -199,8 +199,9 @@ Foam::tmp<Foam::vectorField> Foam::slideBaseVelocityFvPatchVectorField::transpos
     tmp<vectorField> tflux(new vectorField(size(), Zero));
     vectorField& flux = tflux.ref();
 
-    // The shear traction of the transpose flux on each slipping face: taken out
-    // whole near a kink, gathered for its running mean elsewhere.
+    // On each slipping face: the transpose flux's shear traction taken out whole
+    // near a kink; with runningMean its normal traction taken out, and its shear
+    // traction gathered for its running mean elsewhere.
     DynamicList<scalar> x(size());
     DynamicList<vector> traction(size());
     DynamicList<scalar> area(size());
@@ -208,10 +209,12 @@ Foam::tmp<Foam::vectorField> Foam::slideBaseVelocityFvPatchVectorField::transpos
     {
         if (!slipping(valueFraction()[facei])) continue;
         const vector f = muf[facei]*(Sf[facei] & dev2(Foam::T(gradUf[facei])));
-        const vector shear = f - n[facei]*(n[facei] & f);
+        const vector normal = n[facei]*(n[facei] & f);
+        const vector shear = f - normal;
+        if (transposeShearMean_) flux[facei] = normal;
         if (bent[facei])
         {
-            flux[facei] = shear;
+            flux[facei] += shear;
             continue;
         }
         if (!transposeShearMean_) continue;
@@ -258,7 +261,7 @@ Foam::tmp<Foam::vectorField> Foam::slideBaseVelocityFvPatchVectorField::transpos
         const label lo = std::lower_bound(sortedX.begin(), sortedX.end(), xi - halfWidth) - sortedX.begin();
         const label hi = std::upper_bound(sortedX.begin(), sortedX.end(), xi + halfWidth) - sortedX.begin();
         const vector mean = (forceSum[hi] - forceSum[lo])/max(areaSum[hi] - areaSum[lo], VSMALL);
-        flux[facei] = (mean - n[facei]*(n[facei] & mean))*magSf[facei];
+        flux[facei] += (mean - n[facei]*(n[facei] & mean))*magSf[facei];
     }
     return tflux;
 }

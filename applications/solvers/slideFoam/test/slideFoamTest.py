@@ -27,6 +27,7 @@ generated from SlideFoam scenes by slideFoamCase:
 
 Usage: slideFoamTest.py NAME [workDir]"""
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -280,14 +281,14 @@ def block_following_base(s_kink, angle1, angle2, drag=lambda v: 0.0, end=None, l
                          rho=1073.0, dt=1e-4):
     """A rigid block (the flume slurry made strong) from rest, following a base that turns from angle1 to angle2
     (downslope positive, radians) s_kink along it, its front starting at `length`, with a basal traction drag(V):
-    its front's travel and the time, at `end` or, without one, where its downslope motion first stops."""
+    its front's travel, the time and its speed, at `end` or, without one, where its downslope motion first stops."""
     front, speed, time = length, 0.0, 0.0
     while (time < end - 0.5*dt) if end is not None else (speed > 0 or time < 0.1):
         past = min(max((front - s_kink)/length, 0.0), 1.0)   # share of the block past the kink
         speed += (9.81*((1 - past)*np.sin(angle1) + past*np.sin(angle2)) - drag(speed)/(rho*height))*dt
         front += speed*dt
         time += dt
-    return front - length, time
+    return front - length, time, speed
 
 
 def test_polyline(work):
@@ -336,7 +337,7 @@ def test_polyline(work):
                          scene={"s_uo": 2000, "rearWall": "no"}, interface="interface frictional;\n    s_b 0;", end=1.5)
     run_slidefoam(kink)
     travel = runout(kink)["front"][-1]
-    following, _ = block_following_base(1.5/np.cos(np.arctan(t)), np.arctan(t), np.arctan(t2), end=1.5)
+    following, _, _ = block_following_base(1.5/np.cos(np.arctan(t)), np.arctan(t), np.arctan(t2), end=1.5)
     check(abs(travel/following - 1) < 0.08, "strong block over a kink (3.43 to 1.7 deg), frictionless: front moved "
           "%.3f m in 1.5 s, a block following the base %.3f m (within 8 %%)" % (travel, following))
 
@@ -350,7 +351,7 @@ def test_polyline(work):
                           end=8.0, control={"stopAtRest": "yes"})
     run_slidefoam(climb)
     r, s = runout(climb), summary(climb)
-    travel, time = block_following_base(2.4/np.cos(np.arctan(t)), np.arctan(t), -np.arctan(up),
+    travel, time, _ = block_following_base(2.4/np.cos(np.arctan(t)), np.arctan(t), -np.arctan(up),
                                         drag=lambda v: 0.5*1000.0*0.5*v**2)   # rho_w, C_F 0.5
     check(s["at_rest"] and s["end_time_s"] < 7.0, "hydroplaning block climbing 5 deg: the run ends where its "
           "downslope motion stops, at %.2f s (a block following the base: %.2f s), at rest %s"
@@ -371,9 +372,41 @@ def test_polyline(work):
           "conservePlugMomentum yes writes restoreCorrectorMomentum (fvSolution) and transposeShear runningMean (0/U)")
     run_slidefoam(glide)
     travel = runout(glide)["front"][-1]
-    law, _ = block_following_base(8.0, np.arctan(t), np.arctan(t), drag=lambda v: 0.5*1000.0*0.5*v**2, end=1.5)
+    law, _, _ = block_following_base(8.0, np.arctan(t), np.arctan(t), drag=lambda v: 0.5*1000.0*0.5*v**2, end=1.5)
     check(abs(travel/law - 1) < 0.08, "strong block hydroplaning down 3.43 deg with conservePlugMomentum: front moved "
           "%.3f m in 1.5 s, the rigid-block law %.3f m (within 8 %%)" % (travel, law))
+
+
+def test_plug(work):
+    # The Finneidfjord block (tutorial scene, s_uo 15 kPa, hydroplaning, C_F 0.003)
+    # at H0/2 to 20 s with the tutorial's conservePlugMomentum: with the base's
+    # normal transpose traction taken out its cells stay at the viscosity cap (a
+    # plug) and it slides as the rigid block does. Without it (the default) none
+    # of them is at the cap by 10 s and the block runs 3.8 % slow at 20 s.
+    top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
+    case = make_case(os.path.join(top, "tutorials", "finneidfjord"), work, "finneidfjord_plug",
+                     control={"endTime": 20, "writeInterval": 10},
+                     cfd={"setting": "fast", "cellsPerHeight": 2, "processors": 1, "reach": 150,
+                          "conservePlugMomentum": "yes"})
+    prepare(case)
+    run_slidefoam(case)
+    props = open(os.path.join(case, "constant", "transportProperties")).read()
+    mu_max = float(re.search(r"muMax\s+([0-9.eE+-]+);", props).group(1))
+    rho = 500.0
+    alpha = read_field(case, "20", "alpha.slide")
+    mu = rho*read_field(case, "20", "nu1")
+    slide = alpha >= 0.5
+    at_cap = np.mean(mu[slide] >= 0.999*mu_max)
+    check(at_cap >= 2.0/3.0, "Finneidfjord block at H0/2, 20 s: %.0f %% of its %d cells at the viscosity cap (at least "
+          "two thirds: a plug)" % (100*at_cap, slide.sum()))
+    r = runout(case)
+    k = int(np.argmin(np.abs(np.asarray(r["time"]) - 20.0)))
+    speed = np.sqrt(2*r["kineticEnergy"][k]/r["mass"][k])
+    angle = np.arctan(3.035/184.975)   # the base's first stretch, where the block is at 20 s
+    _, _, law = block_following_base(1e9, angle, angle, end=20.0, length=60.0, height=2.0, rho=rho, dt=1e-3,
+                                     drag=lambda v: 0.5*1000.0*0.003*v**2)
+    check(abs(speed/law - 1) < 0.02, "Finneidfjord block at H0/2: mean speed %.3f m/s at 20 s, the rigid hydroplaning "
+          "block %.3f m/s (within 2 %%)" % (speed, law))
 
 
 FOAM_HEADER = "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object %s;\n}\n"
