@@ -20,6 +20,8 @@ generated from SlideFoam scenes by slideFoamCase:
               the slope's frame; over a kink onto a gentler slope it runs shorter;
               slide area, volume and alpha bounds kept on both; a block hydroplaning
               into an adverse slope stops where its downslope motion first stops
+  plug        the Finneidfjord block at H0/2 with conservePlugMomentum stays a plug
+              (its cells at the viscosity cap) and slides as the rigid block does
   reconstruction  slideFoam's flux reconstruction returns a uniform velocity from
               its face fluxes to round-off on a mesh rotated 3.43 deg (fvc::reconstruct
               of Debian's v1912 build does not: fluxReconstruction.H) and on the
