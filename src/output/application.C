@@ -195,9 +195,9 @@ unsigned long long availableMemoryBytes()
 }
 
 void checkMemory(unsigned long long bytes, const std::string& what, const std::string& file, int line,
-                 const std::string& key)
+                 const std::string& key, const unsigned long long available)
 {
-    const unsigned long long avail = availableMemoryBytes();
+    const unsigned long long avail = available > 0 ? available : availableMemoryBytes();
     if (avail > 0 && bytes > avail*8/10)
     {
         std::ostringstream os;

@@ -1,21 +1,44 @@
 #include "backgroundGrid.H"
 
+#include "application.H"
+
 #include <algorithm>
 #include <cmath>
+#if defined(KOKKOS_ENABLE_CUDA)
+#include <cuda_runtime.h>
+#endif
 
 namespace slide
 {
 namespace mpm
 {
 
+unsigned long long availableMemoryBytes()
+{
+    unsigned long long bytes = output::availableMemoryBytes();
+#if defined(KOKKOS_ENABLE_CUDA)
+    // The particles and the grid live on the GPU; the host keeps output snapshots.
+    size_t freeBytes = 0, totalBytes = 0;
+    if (cudaMemGetInfo(&freeBytes, &totalBytes) == cudaSuccess)
+    {
+        bytes = bytes > 0 ? std::min<unsigned long long>(bytes, freeBytes) : freeBytes;
+    }
+#endif
+    return bytes;
+}
+
 unsigned long long BackgroundGrid::bytesFor(const long long nNodes)
 {
-    const unsigned long long threads = static_cast<unsigned long long>(ExecutionSpace().concurrency());
+    // One copy per thread where the scatter duplicates (OpenMP), none where it
+    // adds atomically (CUDA, whose concurrency of some 10^5 threads would count
+    // a 48 GB grid for a flume of 2400 particles).
+    const unsigned long long copies =
+        nodeScatterIsAtomic ? 1ull : static_cast<unsigned long long>(ExecutionSpace().concurrency()) + 1ull;
     // Nodal components, averaging and pressure sums with their duplicates, the
     // velocity; and the base's fill and the row above the base, 2 + 3 per
     // column with duplicates, where a window (fit) has at least 6 rows.
     const unsigned long long n = static_cast<unsigned long long>(nNodes);
-    return 8ull*n*((nComponents + 2 + 2)*(threads + 1) + 2) + 8ull*5ull*(threads + 1)*(n/6 + 1);
+    return 8ull*n*((nComponents + 2 + 2)*copies + 2) + 8ull*5ull*copies*(n/6 + 1);
 }
 
 bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, unsigned long long maxBytes)

@@ -154,14 +154,23 @@ MaterialPoints::Located MaterialPoints::fastest() const
         }, Reducer(best));
     Located r;
     if (best.loc < 0 || best.loc >= count) return r;
-    auto px = Kokkos::subview(position, best.loc, Kokkos::ALL());
-    auto pv = Kokkos::subview(velocity, best.loc, Kokkos::ALL());
-    auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), px);
-    auto hv = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pv);
-    r.index = best.loc;
-    r.x = hx(0);
-    r.y = hx(1);
-    r.speed = std::sqrt(hv(0)*hv(0) + hv(1)*hv(1));
+    // Gathered on the device first: a particle's row of a LayoutLeft view (CUDA's
+    // default) is strided, and Kokkos copies no strided view between spaces.
+    Kokkos::View<double[4], MemorySpace> state("fastestState");
+    const ParticleVector x = position;
+    const int q = best.loc;
+    Kokkos::parallel_for("fastestState", Kokkos::RangePolicy<ExecutionSpace>(0, 1), KOKKOS_LAMBDA(const int)
+    {
+        state(0) = x(q, 0);
+        state(1) = x(q, 1);
+        state(2) = v(q, 0);
+        state(3) = v(q, 1);
+    });
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state);
+    r.index = q;
+    r.x = h(0);
+    r.y = h(1);
+    r.speed = std::sqrt(h(2)*h(2) + h(3)*h(3));
     return r;
 }
 

@@ -102,7 +102,7 @@ long long ParticleSplitting::split(MaterialPoints& mp, BackgroundGrid& grid, con
         const int c = n + offset(p);
         // The halves' centres lie a quarter of the domain either side, and within
         // half a cell: the grid's window around the parents holds them.
-        const double h = std::min(0.25*ls(p, a), 0.5*d);
+        const double h = std::fmin(0.25*ls(p, a), 0.5*d);   // fmin: std::min is host-only under nvcc
         const double hx = a == 0 ? h : 0.0, hy = a == 1 ? h : 0.0;
         // C is the velocity's gradient on the grid's lattice: the offset in its
         // coordinates has the height above the sheared rows' base.

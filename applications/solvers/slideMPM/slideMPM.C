@@ -67,7 +67,7 @@ int main(int argc, char** argv)
             output::checkMemory(n*mpm::MaterialPoints::bytesPerParticle
                                 + mpm::BackgroundGrid::bytesFor(4ll*n/(ppc*ppc) + 1000),
                                 std::to_string(n) + " particles", caseDir + "/system/mpmDict",
-                                controls.resolutionLine, controls.resolutionKey);
+                                controls.resolutionLine, controls.resolutionKey, mpm::availableMemoryBytes());
         }
         const mpm::BaseFrame frame = mpm::BaseFrame::fromScene(sc);
         const mpm::UndrainedClay clay = controls.clay(sc.rheology, d);
@@ -161,16 +161,16 @@ int main(int argc, char** argv)
         output::Progress progress(t, rc.endTime, controls.progressInterval);
         write(t, restartAt <= 0.0);   // a restart only needs `last`: its row is in runout.dat
         progress.report(t, step, true, "front = " + std::to_string(last.front) + " m");
-        const unsigned long long gridBudget = output::availableMemoryBytes() > 0
-            ? output::availableMemoryBytes()/2 : 8ull << 30;
+        const unsigned long long freeMemory = mpm::availableMemoryBytes();
+        const unsigned long long gridBudget = freeMemory > 0 ? freeMemory/2 : 8ull << 30;
 
         bool atRest = false;
         bool slowingDown = true;
         double particleUpdates = 0.0;
         const mpm::ParticleSplitting& splitting = integrator.splitting();
         // Splitting may grow the cloud up to the memory free at the start (read once, not every check).
-        const long long maxParticles = output::availableMemoryBytes() > 0
-            ? output::availableMemoryBytes()*8/10/mpm::MaterialPoints::bytesPerParticle : 1ll << 40;
+        const long long maxParticles = freeMemory > 0
+            ? freeMemory*8/10/mpm::MaterialPoints::bytesPerParticle : 1ll << 40;
         // s_u and the strain rates are output only: recorded by the steps whose end is written.
         bool restPending = false;
         // Hydroplaning needs motion: the water film that carries the slide has no

@@ -732,8 +732,8 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         }
         if (record || lagged) plasticRate(p) = dXi/dt;
         V(p) *= stretchFactor(dil*dt);
-        len(p, 0) = std::min(maxLength, len(p, 0)*stretchFactor(Lp[0]*dt));
-        len(p, 1) = std::min(maxLength, len(p, 1)*stretchFactor(Lp[3]*dt));
+        len(p, 0) = std::fmin(maxLength, len(p, 0)*stretchFactor(Lp[0]*dt));   // fmin: std::min is host-only under nvcc
+        len(p, 1) = std::fmin(maxLength, len(p, 1)*stretchFactor(Lp[3]*dt));
         const double xn = x(p, 0) + dt*v(p, 0);
         double yn = x(p, 1) + dt*v(p, 1);
         // The grid's contact keeps nodes out of the base, but a particle near it
