@@ -9,6 +9,12 @@
 #
 #   validation/mpm/deviceCheck.sh BINDIR OUTDIR
 #
+# BINDIR from a build here, e.g. (the folder ignored by git, carried to the GPU):
+#   bin/tools/slidefoam-build-cuda --arch HOPPER90; o=platforms/$SLIDEFOAM_OPTIONS; mkdir -p .device
+#   cp $o/bin-cuda/slideMPM .device/slideMPM-cuda; cp $o/bin/slideMPM .device/slideMPM-openmp
+#   cp $o/cmake-cuda/applications/solvers/slideMPM/mpmSceneTest .device/mpmSceneTest-cuda
+#   cp -L /lib/x86_64-linux-gnu/libgomp.so.1 /usr/local/cuda/lib64/libcudart.so.13 .device/
+#
 # OUTDIR gets machine.txt, sceneTests.log, the runs' logs and summaries
 # (deviceBenchmark.sh) and results.txt, one line per run; each phase has its
 # own time limit so that a slow one leaves the others their time; a smoke run
