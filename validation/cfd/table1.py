@@ -19,7 +19,7 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import make_case, prepare, run, run_slidefoam, set_entry  # noqa: E402
+from cfdcase import make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
 from paper import paper_table  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import read_summary, read_runout  # noqa: E402
@@ -40,7 +40,9 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
     if reach:
         cfd["reach"] = "%.1f" % reach
     control = {"maxCo": max_co, "maxAlphaCo": max_co} if max_co else None
-    d = make_case(src, work, "case%02d_H0_%d" % (c, cells), cfd=cfd, control=control)
+    # The tutorial's cfdDict with the mesh set: what else it says (a scene's shearBandThickness) is kept.
+    d = make_case(src, work, "case%02d_H0_%d" % (c, cells), control=control)
+    set_method_entries(d, "cfdDict", cfd)
     run(d, which("slideDAM"), "-case", ".")
     dam = read_summary(os.path.join(d, "postProcessing", "slideDAM", "summary.json"))
     if dam["at_rest"] and not scene_end:

@@ -27,6 +27,16 @@ def mechanism_at(summary, t):
     return None
 
 
+def front_at(history, t):
+    """Front travel at time t from [[time, front], ...] (linear between the logged times), None after its end."""
+    if not history or t > history[-1][0] + 1e-9:
+        return None
+    for (t0, f0), (t1, f1) in zip(history, history[1:]):
+        if t0 <= t <= t1:
+            return f0 + (f1 - f0)*(t - t0)/(t1 - t0) if t1 > t0 else f1
+    return history[-1][1]
+
+
 def read_vtp(path):
     """Points (n x 3) and point arrays {name: array} of a SlideFoam .vtp file."""
     with open(path, "rb") as f:

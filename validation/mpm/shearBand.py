@@ -21,7 +21,7 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case  # noqa: E402
 from runner import run_method  # noqa: E402
-from slidefoam_io import mechanism_at  # noqa: E402
+from slidefoam_io import front_at as front_of, mechanism_at  # noqa: E402
 
 # (name, tutorial, H0 [m], end time [s] or None for the tutorial's)
 SCENES = [("Case 11", "table1/case11", 5.0, 30.0),
@@ -56,14 +56,7 @@ def run(name, tut, H0, end, cells, band, work):
 
 
 def front_at(res, t):
-    """Front travel at time t (linear between the logged times), None after the run's end."""
-    h = res["history"]
-    if t > h[-1][0] + 1e-9:
-        return None
-    for (t0, f0), (t1, f1) in zip(h, h[1:]):
-        if t0 <= t <= t1:
-            return f0 + (f1 - f0)*(t - t0)/(t1 - t0) if t1 > t0 else f1
-    return h[-1][1]
+    return front_of(res["history"], t)
 
 
 def write(results):

@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling",
-                      "conservePlugMomentum",
+                      "conservePlugMomentum", "shearBandThickness",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -69,6 +69,11 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
         c.momentumTolerance = d.getScalarInRange("momentumTolerance", 1e-14, 1e-3, true, true,
                                                  "momentum predictor's absolute tolerance");
     }
+    if (d.found("shearBandThickness"))
+    {
+        c.shearBandThickness = d.getScalarInRange("shearBandThickness", 0.0, 1e6, true, true,
+                                                  "shear band thickness xi counts [m] (0: per cell)");
+    }
     if (d.found("processors"))
     {
         c.processors = d.getLabel("processors");
@@ -91,6 +96,7 @@ std::string CfdControls::describe() const
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;
+    if (shearBandThickness > 0.0) os << ", xi counts shear bands " << shearBandThickness << " m thick";
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";
     return os.str();
 }

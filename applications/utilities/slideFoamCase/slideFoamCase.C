@@ -229,7 +229,11 @@ int main(int argc, char** argv)
                << "        regularisation  " << c.regularisation << ";\n"
                << "        muMax           " << num(muMax) << ";   // s_u(rate)/rate at the plug creep rate "
                << num(creep) << " 1/s\n"
-               << "        m               " << num(1.0/creep) << ";\n    }\n"
+               << "        m               " << num(1.0/creep) << ";\n"
+               << (c.shearBandThickness > 0.0
+                   ? "        shearBandThickness " + num(c.shearBandThickness) + ";   // cfdDict: xi per band this thick\n"
+                   : "")
+               << "    }\n"
                << "    rho             " << num(rhoSlide) << ";\n}\n\n"
                << "ambient\n{\n    transportModel  Newtonian;\n    nu              "
                << num(sc.ambient.viscosity/sc.ambient.density) << ";\n    rho             " << num(sc.ambient.density)

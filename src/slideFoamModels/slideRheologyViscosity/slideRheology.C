@@ -45,6 +45,60 @@ void Foam::viscosityModels::slideRheology::readCoeffs()
             << "key 'regularisation': expected cap or papanastasiou, got " << type
             << exit(FatalIOError);
     }
+
+    shearBandThickness_ = coeffs_.getOrDefault<scalar>("shearBandThickness", 0);
+    if (shearBandThickness_ < 0 || !std::isfinite(shearBandThickness_))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "key 'shearBandThickness': the shear band thickness must be >= 0 m (0: xi per cell), got "
+            << shearBandThickness_ << exit(FatalIOError);
+    }
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::viscosityModels::slideRheology::bandCellSize() const
+{
+    const fvMesh& mesh = U_.mesh();
+    const vectorField& faceAreas = mesh.faceAreas();
+    const Vector<label>& solutionD = mesh.solutionD();
+    tmp<scalarField> tsize(new scalarField(mesh.nCells(), Zero));
+    scalarField& size = tsize.ref();
+    forAll(size, celli)
+    {
+        scalar largest = 0;
+        for (const label facei : mesh.cells()[celli])
+        {
+            const vector& Sf = faceAreas[facei];
+            const scalar A = mag(Sf);
+            // A face of a 2D mesh's empty front or back bounds no band.
+            scalar offPlane = 0;
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                if (solutionD[d] < 0) offPlane += mag(Sf[d]);
+            }
+            if (offPlane < 0.5*A) largest = max(largest, A);
+        }
+        size[celli] = largest > 0 ? mesh.V()[celli]/largest : 0;
+    }
+    return tsize;
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::viscosityModels::slideRheology::shearBandStrainFactor() const
+{
+    tmp<scalarField> tfactor(new scalarField(U_.mesh().nCells(), scalar(1)));
+    if (shearBandThickness_ > 0)
+    {
+        const scalarField h(bandCellSize());
+        scalarField& factor = tfactor.ref();
+        forAll(factor, celli)
+        {
+            factor[celli] = slide::rheology::shearBandStrainFactor(shearBandThickness_, h[celli]);
+        }
+    }
+    return tfactor;
 }
 
 
@@ -104,10 +158,12 @@ Foam::viscosityModels::slideRheology::plasticShearRate() const
         )
     );
     volScalarField& rate = trate.ref();
+    // Recomputed each call: cheaper than the strain rate, and follows a moving mesh.
+    const scalarField bandFactor(shearBandStrainFactor());
     forAll(rate, celli)
     {
         const scalar xi = xiPtr ? (*xiPtr)[celli] : 0.0;
-        rate[celli] = slide::rheology::plasticShearRate(material_, sr[celli], xi, regularisation_);
+        rate[celli] = bandFactor[celli]*slide::rheology::plasticShearRate(material_, sr[celli], xi, regularisation_);
     }
     return trate;
 }

@@ -13,7 +13,10 @@ generated from SlideFoam scenes by slideFoamCase:
               no-slip base to round-off; s_b = 0, s_b 20 Pa, hydroplaning and no-slip
               order the runout as they must; volume conserved with each
   remoulding  xi grows only in yielded slide material and weakens it: the same
-              slide runs further with remoulding than without
+              slide runs further with remoulding than without; with
+              shearBandThickness xi counts a band h/t times the cell's strain
+              (exactly, where xi does not feed back) and the factor follows the
+              cell thickness on a graded mesh
   parallel    the flume on 2 MPI ranks (decomposePar) matches the serial run
   polyline    the flume's slope given as a polyline (vertical columns, gravity
               down: faces not aligned with the axes) runs as the planar scene in
@@ -233,6 +236,37 @@ def test_remoulding(work):
           "summary.json's xi_max is the slide's largest xi")
     check(float(np.max(xi[alpha > 0.99])) > 1.0, "sheared slide cells reach xi > 1 (max %.3g)"
           % float(np.max(xi[alpha > 0.99])))
+
+    # Counted per shear band: square cells of H0/10 = 0.03 m holding bands 0.01 m
+    # thick. The flume's deltaRem is 1, so xi does not feed back: the flow is the
+    # same and xi three times the per-cell xi in every cell.
+    band = make_case(FLUME, work, "intactBand", control=common["control"],
+                     cfd=dict(common["cfd"], shearBandThickness=0.01))
+    prepare(band)
+    run_slidefoam(band)
+    log = open(os.path.join(band, "log.slideFoam")).read()
+    check("band strain = 3-3 x cell strain" in log, "log: square cells 0.03 m thick, band strain 3 x cell strain")
+    t = time_dirs(band)[-1]
+    xi_cell, xi_band = read_field(intact, t, "xi"), read_field(band, t, "xi")
+    du = float(np.max(np.abs(read_field(band, t, "U") - read_field(intact, t, "U"))))
+    check(du == 0.0, "xi without feedback leaves the flow as it was (max |dU| %.3g m/s)" % du)
+    # The fields are written with 8 significant digits.
+    err = float(np.max(np.abs(xi_band - 3*xi_cell)/np.maximum(xi_band, 1e-30)))
+    check(float(np.max(xi_cell)) > 1.0 and err < 2e-7,
+          "xi per band = 3 x xi per cell in every cell (max %.3g, worst relative difference %.2g)"
+          % (float(np.max(xi_band)), err))
+    # A graded mesh: H0/40 = 0.0075 m on the base, 0.03 m above; bands 0.01 m
+    # thick: the cells on the base resolve them (factor 1), the uniform ones count 3.
+    graded = make_case(FLUME, work, "gradedBand", control={"endTime": 0.002, "writeInterval": 0.002},
+                       cfd=dict(common["cfd"], shearBandThickness=0.01, baseRefinement=4))
+    prepare(graded)
+    run_slidefoam(graded)
+    m = re.search(r"in cells ([0-9.e-]+)-([0-9.e-]+) m thick: band strain = ([0-9.e-]+)-([0-9.e-]+) x",
+                  open(os.path.join(graded, "log.slideFoam")).read())
+    h0, h1, f0, f1 = (float(g) for g in m.groups()) if m else (0, 0, 0, 0)
+    check(abs(h0 - 0.0075) < 1e-9 and abs(h1 - 0.03) < 1e-6 and f0 == 1.0 and abs(f1 - 3) < 1e-4,
+          "graded mesh: cells %.4g-%.4g m thick (0.0075-0.03), band strain %.4g-%.4g x cell strain (1-3)"
+          % (h0, h1, f0, f1))
 
 
 def test_parallel(work):
