@@ -79,6 +79,13 @@ MPMBAND = """// Eq. (1)'s remoulding acts in shear bands, as thin as the cells t
 shearBandThickness 0.0833333;
 """
 
+# The same counting in slideFoam (validation/cfd/shearBand.md).
+CFDBAND = """// Remoulding counted per shear band of the paper's MPM cell, H0/60, as slideMPM
+// does (mpmDict): band strain = 6 x cell strain in the 0.5 m cells, 1.5 x on the
+// base's 0.125 m cells (validation/cfd/shearBand.md).
+shearBandThickness 0.0833333;
+"""
+
 # Case 11 moves by shear bands in its body, which a 0.5 m cell cannot hold apart.
 MPMFINE = """// At this cell the slide moves as one remoulded layer. Its horsts and grabens
 // (the paper's Fig. 8) need cells of H0/40 (validation/mpm/shearBand.md):
@@ -122,6 +129,11 @@ def readme(case, row, paper):
              "- Paper: %s; runout %s." % (row["mechanism"], paper or "not given")]
     if case in SHOWS:
         lines.append("- The paper also shows %s." % SHOWS[case])
+    if (num(row["delta_rem"]) or 1.0) < 1:
+        lines.append("- slideMPM and slideFoam count the remoulding strain xi per shear band of the paper's MPM cell, "
+                     "H0/60 (`shearBandThickness` in `system/mpmDict` and `cfdDict`): Eq. (1) has no length scale, "
+                     "and counted per cell the remoulding depends on the cell (`validation/mpm/shearBand.md`, "
+                     "`validation/cfd/shearBand.md`).")
     if case == 11:
         lines.append("- slideMPM at this tutorial's cell, H0/10, moves the slide as one remoulded layer. With "
                      "`cellsPerHeight 40; particlesPerCell 2;` in `system/mpmDict` (12 minutes on 2 cores) it parts "
@@ -232,7 +244,7 @@ runTimeModifiable no;
         f.write(header.format(case=case, obj="mpmDict") + MPMDICT + (MPMBAND if drem < 1 else "")
                 + (MPMFINE if case == 11 else ""))
     with open(os.path.join(d, "system", "cfdDict"), "w") as f:
-        f.write(header.format(case=case, obj="cfdDict") + CFDDICT)
+        f.write(header.format(case=case, obj="cfdDict") + CFDDICT + (CFDBAND if drem < 1 else ""))
     with open(os.path.join(d, "README.md"), "w") as f:
         f.write(readme(case, row, paper))
     for name, text in (("Allrun", ALLRUN), ("Allclean", ALLCLEAN)):
