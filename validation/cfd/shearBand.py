@@ -19,6 +19,7 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import copy_scene, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
 from runner import which  # noqa: E402
+from plotting import front_axes, plot_history, pyplot  # noqa: E402
 from slidefoam_io import front_at, read_runout, read_summary  # noqa: E402
 
 # (name, tutorial, H0 [m], [(cells per H0, end time [s] or None for the tutorial's)])
@@ -88,26 +89,19 @@ def write(results):
     lines.append("")
     open(os.path.join(here, "shearBand.md"), "w").write("\n".join(lines))
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, axs = plt.subplots(1, len(order), figsize=(5*len(order), 4))
     for ax, name in zip(axs, order):
         for r in results:
             if r["scene"] == name:
-                h = r["history"]
-                ax.plot([a for a, _ in h], [b for _, b in h], "-" if r["band"] > 0 else "--",
-                        label="slideFoam H0/%d, %s" % (r["cells"], "band H0/60" if r["band"] > 0 else "per cell"))
+                plot_history(ax, r["history"], "-" if r["band"] > 0 else "--",
+                             "slideFoam H0/%d, %s" % (r["cells"], "band H0/60" if r["band"] > 0 else "per cell"))
         for m in mpm:
             if m["scene"] == name and m["cells"] == 10:
-                h = m["history"]
-                ax.plot([a for a, _ in h], [b for _, b in h], ":", color="grey" if m["band"] > 0 else "silver",
-                        label="slideMPM H0/10, %s" % ("band H0/60" if m["band"] > 0 else "per cell"))
-        ax.set_title(name)
-        ax.set_xlabel("t [s]")
-        ax.set_ylabel("front travel [m]")
-        ax.legend(fontsize=7)
-        ax.grid(alpha=0.3)
+                plot_history(ax, m["history"], ":", "slideMPM H0/10, %s" % ("band H0/60" if m["band"] > 0
+                                                                             else "per cell"),
+                             color="grey" if m["band"] > 0 else "silver")
+        front_axes(ax, name, fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(here, "shearBand.png"), dpi=100)
 
