@@ -20,6 +20,7 @@ sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import copy_scene, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
 from runner import which  # noqa: E402
 from plotting import front_axes, plot_history, pyplot  # noqa: E402
+from shearband import spread_lines  # noqa: E402
 from slidefoam_io import front_at, read_runout, read_summary  # noqa: E402
 
 # (name, tutorial, H0 [m], [(cells per H0, end time [s] or None for the tutorial's)])
@@ -77,16 +78,7 @@ def write(results):
             fmt(front_at(r["history"], 5)), fmt(front_at(r["history"], 10)), fmt(front_at(r["history"], 30)),
             r["runout"], r["endTime"], "yes" if r["atRest"] else "no", r["xiMax"],
             fmt(mpm_front(r, 10)), fmt(mpm_front(r, 30)), r["wall"]))
-    lines += ["", "Front at 10 s, finest over coarsest mesh (1 = mesh-objective):", ""]
-    for name in order:
-        for banded in (False, True):
-            fs = sorted((r["cells"], front_at(r["history"], 10)) for r in results
-                        if r["scene"] == name and (r["band"] > 0) == banded and front_at(r["history"], 10))
-            if len(fs) >= 2:
-                lines.append("- %s, %s: %s; finest/coarsest %.2f" % (
-                    name, "per band" if banded else "per cell", ", ".join("H0/%d %.1f m" % f for f in fs),
-                    fs[-1][1]/fs[0][1]))
-    lines.append("")
+    lines += spread_lines(results, order, "mesh")
     open(os.path.join(here, "shearBand.md"), "w").write("\n".join(lines))
 
     plt = pyplot()

@@ -22,6 +22,7 @@ sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case  # noqa: E402
 from runner import run_method  # noqa: E402
 from plotting import front_axes, plot_history, pyplot  # noqa: E402
+from shearband import spread_lines  # noqa: E402
 from slidefoam_io import front_at as front_of, mechanism_at  # noqa: E402
 
 # (name, tutorial, H0 [m], end time [s] or None for the tutorial's)
@@ -85,16 +86,7 @@ def write(results):
             # A run continued from its written state (slideMPM restarts bit for bit: CTest slideMPM_restart*).
             lines[-1] = lines[-1][:-2] + " (in two parts, restarted at %g s) |" % r["restartedAt"]
     # The mesh dependence in one number per scene and counting: spread of the fronts at 10 s over the cells.
-    lines += ["", "Front at 10 s, finest over coarsest cell (1 = mesh-objective):", ""]
-    for name, _, _, _ in SCENES:
-        for banded in (False, True):
-            fs = sorted((r["cells"], front_at(r, 10)) for r in results
-                        if r["scene"] == name and (r["band"] > 0) == banded and front_at(r, 10))
-            if len(fs) >= 2:
-                lines.append("- %s, %s: %s; finest/coarsest %.2f" % (
-                    name, "per band" if banded else "per cell", ", ".join("H0/%d %.1f m" % f for f in fs),
-                    fs[-1][1]/fs[0][1]))
-    lines.append("")
+    lines += spread_lines(results, [s[0] for s in SCENES], "cell")
     open(os.path.join(here, "shearBand.md"), "w").write("\n".join(lines))
 
     plt = pyplot()
