@@ -82,6 +82,9 @@ def write(results):
             "yes" if r["atRest"] else "no", r["mech10"] or "-",
             (r["mech30"] if r["endTime"] >= 30.0 - 1e-9 else None) or "-", r["mechanism"],
             r["shearBand"] or "-", r["wall"]))
+        if r.get("stale"):
+            # A stored run of an older slideMPM, too long to repeat with every change: said so, not hidden.
+            lines[-1] = lines[-1][:-2] + " (stored: %s) |" % r["stale"]
         if r.get("restartedAt"):
             # A run continued from its written state (slideMPM restarts bit for bit: CTest slideMPM_restart*).
             lines[-1] = lines[-1][:-2] + " (in two parts, restarted at %g s) |" % r["restartedAt"]
