@@ -283,6 +283,8 @@ add("cfd-ahead-height-above", "a mesh higher ahead of the slide (2 H0) than over
 
 add("mpm-band-negative", "a negative shear band thickness", "system/mpmDict",
     mpm0[:-1] + ["shearBandThickness -0.01;", ""], len(mpm0), "shearBandThickness", "slideMPM")
+add("cfd-band-negative", "a negative shear band thickness for slideFoam's remoulding", "system/cfdDict",
+    cfd0[:-1] + ["shearBandThickness -0.01;", ""], len(cfd0), "shearBandThickness", "slideFoamCase")
 add("mpm-initial-stress-word", "an initial stress slideMPM does not know (lithostatic)", "system/mpmDict",
     mpm0[:-1] + ["initialStress lithostatic;", ""], len(mpm0), "initialStress", "slideMPM")
 
