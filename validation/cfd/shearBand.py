@@ -20,7 +20,7 @@ sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import copy_scene, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
 from runner import which  # noqa: E402
 from plotting import front_axes, plot_history, pyplot  # noqa: E402
-from shearband import spread_lines  # noqa: E402
+from shearband import plot_runs, spread_lines  # noqa: E402
 from slidefoam_io import front_at, read_runout, read_summary  # noqa: E402
 
 # (name, tutorial, H0 [m], [(cells per H0, end time [s] or None for the tutorial's)])
@@ -84,10 +84,7 @@ def write(results):
     plt = pyplot()
     fig, axs = plt.subplots(1, len(order), figsize=(5*len(order), 4))
     for ax, name in zip(axs, order):
-        for r in results:
-            if r["scene"] == name:
-                plot_history(ax, r["history"], "-" if r["band"] > 0 else "--",
-                             "slideFoam H0/%d, %s" % (r["cells"], "band H0/60" if r["band"] > 0 else "per cell"))
+        plot_runs(ax, results, name, "slideFoam ")
         for m in mpm:
             if m["scene"] == name and m["cells"] == 10:
                 plot_history(ax, m["history"], ":", "slideMPM H0/10, %s" % ("band H0/60" if m["band"] > 0

@@ -17,3 +17,12 @@ def spread_lines(results, names, mesh_word, t=10.0):
                     name, "per band" if banded else "per cell", ", ".join("H0/%d %.1f m" % f for f in fs),
                     fs[-1][1]/fs[0][1]))
     return lines + [""]
+
+
+def plot_runs(ax, results, name, prefix=""):
+    """A scene's front histories on an axis: per band solid, per cell dashed."""
+    from plotting import plot_history
+    for r in results:
+        if r["scene"] == name:
+            plot_history(ax, r["history"], "-" if r["band"] > 0 else "--",
+                         "%sH0/%d, %s" % (prefix, r["cells"], "band H0/60" if r["band"] > 0 else "per cell"))

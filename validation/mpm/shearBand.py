@@ -21,8 +21,8 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case  # noqa: E402
 from runner import run_method  # noqa: E402
-from plotting import front_axes, plot_history, pyplot  # noqa: E402
-from shearband import spread_lines  # noqa: E402
+from plotting import front_axes, pyplot  # noqa: E402
+from shearband import plot_runs, spread_lines  # noqa: E402
 from slidefoam_io import front_at as front_of, mechanism_at  # noqa: E402
 
 # (name, tutorial, H0 [m], end time [s] or None for the tutorial's)
@@ -96,10 +96,7 @@ def write(results):
     names = [s[0] for s in SCENES]
     fig, axs = plt.subplots(1, len(names), figsize=(5*len(names), 4))
     for ax, name in zip(axs, names):
-        for r in results:
-            if r["scene"] == name:
-                plot_history(ax, r["history"], "-" if r["band"] > 0 else "--",
-                             "H0/%d, %s" % (r["cells"], "band H0/60" if r["band"] > 0 else "per cell"))
+        plot_runs(ax, results, name)
         front_axes(ax, name)
     fig.tight_layout()
     fig.savefig(os.path.join(here, "shearBand.png"), dpi=100)
