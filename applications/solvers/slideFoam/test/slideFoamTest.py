@@ -25,6 +25,9 @@ generated from SlideFoam scenes by slideFoamCase:
               into an adverse slope stops where its downslope motion first stops
   plug        the Finneidfjord block at H0/2 with conservePlugMomentum stays a plug
               (its cells at the viscosity cap) and slides as the rigid block does
+  hydrostatic the escarpment tutorial's slide made too strong to move, on its polyline
+              base (sheared columns over a 20 deg face): slide and light ambient stay
+              at rest (the weight and the pressure take the same face gradient)
   reconstruction  slideFoam's flux reconstruction returns a uniform velocity from
               its face fluxes to round-off on a mesh rotated 3.43 deg (fvc::reconstruct
               of Debian's v1912 build does not: fluxReconstruction.H) and on the
@@ -443,6 +446,24 @@ def test_plug(work):
                                      drag=lambda v: 0.5*1000.0*0.003*v**2)
     check(abs(speed/law - 1) < 0.02, "Finneidfjord block at H0/2: mean speed %.3f m/s at 20 s, the rigid hydroplaning "
           "block %.3f m/s (within 2 %%)" % (speed, law))
+
+
+def test_hydrostatic(work):
+    # With the non-orthogonal corrections of snGrad(rho), snGrad(p_rgh) and the
+    # p_rgh laplacian (until session 30) the air beside this slide, which does not
+    # move, ran at 24.6 m/s by 5 s and 50 m/s by 10 s, and its cells at 1.3 cm/s.
+    case = make_case(os.path.join(top, "tutorials", "mediterraneanEscarpment"), work, "escarpment_static",
+                     scene={"s_uo": 1e6, "deltaRem": 1}, control={"endTime": 5, "writeInterval": 5},
+                     cfd={"setting": "fast", "cellsPerHeight": 10, "processors": 1, "reach": 20})
+    prepare(case)
+    run_slidefoam(case)
+    alpha = read_field(case, "5", "alpha.slide")
+    speed = np.linalg.norm(read_field(case, "5", "U"), axis=1)
+    ambient, slide = speed[alpha < 1e-3].max(), speed[alpha >= 0.5].max()
+    check(ambient < 0.01, "a slide at rest on the escarpment's polyline base: the light ambient's largest speed at 5 s "
+          "%.2g m/s (< 0.01 m/s)" % ambient)
+    check(slide < 1e-3, "a slide at rest on the escarpment's polyline base: its cells' largest speed at 5 s %.2g m/s "
+          "(< 1 mm/s)" % slide)
 
 
 FOAM_HEADER = "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object %s;\n}\n"
