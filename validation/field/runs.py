@@ -2,7 +2,7 @@
 """Runs the field tutorials (tutorials/finneidfjord, tutorials/mediterraneanEscarpment)
 with their Allrun (slideDAM, slideMPM, slideFoam on the polyline base, then
 compareMethods) and stores what compareMethods wrote in runs.json here, for
-validation/report.py. ~30 min on 2 cores (slideFoam on Finneidfjord, 2 ranks to rest at 268 s, 20 min).
+validation/report.py. ~55 min on 2 cores (slideFoam on Finneidfjord, 2 ranks to rest at 241 s, 47 min).
 
 Usage: validation/field/runs.py [--stored] [--only finneidfjord|mediterraneanEscarpment]
   --stored: collect the tutorials' last results without running
