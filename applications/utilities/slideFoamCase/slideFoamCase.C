@@ -302,7 +302,7 @@ divSchemes
 // (snGrad(p_rgh) and the p_rgh equation's laplacian) take the same face
 // gradient, so that a slide at rest is in discrete hydrostatic balance. Their
 // non-orthogonal corrections, from interpolated cell gradients across an
-// interface where rho jumps 1600-fold, do not balance: on a polyline base's
+// interface where rho jumps 500-1600-fold, do not balance: on a polyline base's
 // sheared columns they drove a light ambient beside a slide at rest to 50 m/s
 // in 10 s (validation/cfd/README.md). On an orthogonal mesh both forms agree.
 laplacianSchemes
