@@ -32,19 +32,16 @@ def fatal_error(log):
 
 
 def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None, retries=2, ahead_height=None,
-             max_co=None, entries=None, name=None, src=None):
-    """entries: further cfdDict entries (a study's knob); name: the run's folder under work; src: the scene
-    case to copy (default the tutorial's)."""
-    src = src or os.path.join(top, "tutorials", "table1", "case%02d" % c)
+             max_co=None):
+    src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement, "processors": processors}
-    cfd.update(entries or {})
     if ahead_height:
         cfd["aheadHeightRatio"] = ahead_height
     if reach:
         cfd["reach"] = "%.1f" % reach
     control = {"maxCo": max_co, "maxAlphaCo": max_co} if max_co else None
     # The tutorial's cfdDict with the mesh set: what else it says (a scene's shearBandThickness) is kept.
-    d = make_case(src, work, name or "case%02d_H0_%d" % (c, cells), control=control)
+    d = make_case(src, work, "case%02d_H0_%d" % (c, cells), control=control)
     set_method_entries(d, "cfdDict", cfd)
     run(d, which("slideDAM"), "-case", ".")
     dam = read_summary(os.path.join(d, "postProcessing", "slideDAM", "summary.json"))
@@ -65,7 +62,7 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
             print("Case %d H0/%d: the front left the mesh at %.1f m; rerunning with reach %.1f m"
                   % (c, cells, front, 3.0*front), flush=True)
             return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1, ahead_height,
-                            max_co, entries, name, src)
+                            max_co)
         return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "refinement": refinement,
                 "ahead_height": ahead_height, "max_co": max_co}
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
