@@ -287,6 +287,9 @@ add("cfd-band-negative", "a negative shear band thickness for slideFoam's remoul
     cfd0[:-1] + ["shearBandThickness -0.01;", ""], len(cfd0), "shearBandThickness", "slideFoamCase")
 add("mpm-initial-stress-word", "an initial stress slideMPM does not know (lithostatic)", "system/mpmDict",
     mpm0[:-1] + ["initialStress lithostatic;", ""], len(mpm0), "initialStress", "slideMPM")
+add("cfd-ahead-from-negative", "the lower top starting behind the initial front (-5 m)", "system/cfdDict",
+    cfd0[:-1] + ["aheadHeightFrom -5;", ""], len(cfd0), "aheadHeightFrom", "slideFoamCase")
+
 
 def main():
     for d in os.listdir(here):

@@ -6,7 +6,8 @@ table1.md (the paper's CFD/DAM/MPM runouts, slideFoam's per mesh, the error
 against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
-                                 [--scene-end] [--ahead-height 0.75] [--max-co 0.25] [--replot]
+                                 [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
+                                 [--max-co 0.25] [--replot]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
 import json
@@ -32,13 +33,17 @@ def fatal_error(log):
 
 
 def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None, retries=2, ahead_height=None,
-             max_co=None):
+             max_co=None, ahead_from=None, behind=None):
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement, "processors": processors}
     if ahead_height:
         cfd["aheadHeightRatio"] = ahead_height
+    if ahead_from is not None:
+        cfd["aheadHeightFrom"] = ahead_from
     if reach:
         cfd["reach"] = "%.1f" % reach
+    if behind:
+        cfd["behind"] = "%.1f" % behind
     control = {"maxCo": max_co, "maxAlphaCo": max_co} if max_co else None
     # The tutorial's cfdDict with the mesh set: what else it says (a scene's shearBandThickness) is kept.
     d = make_case(src, work, "case%02d_H0_%d" % (c, cells), control=control)
@@ -62,15 +67,24 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
             print("Case %d H0/%d: the front left the mesh at %.1f m; rerunning with reach %.1f m"
                   % (c, cells, front, 3.0*front), flush=True)
             return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1, ahead_height,
-                            max_co)
+                            max_co, ahead_from, behind)
+        if "upslope end of the mesh" in log and retries > 0:
+            # The same behind the slide: a weak slide's rear spreads upslope beyond slideDAM's (Case 4).
+            rear = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))["rear"][-1]
+            length = float(re.search(r"length\s+([0-9.eE+-]+)\s*;",
+                                     open(os.path.join(d, "constant", "sceneProperties")).read()).group(1))
+            print("Case %d H0/%d: the rear left the mesh %.1f m upslope of where it started; rerunning with behind "
+                  "%.1f m" % (c, cells, -rear - length, 3.0*(-rear - length)), flush=True)
+            return run_case(c, cells, refinement, processors, work, scene_end, reach, retries - 1, ahead_height,
+                            max_co, ahead_from, 3.0*(-rear - length))
         return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "refinement": refinement,
-                "ahead_height": ahead_height, "max_co": max_co}
+                "ahead_height": ahead_height, "ahead_from": ahead_from, "max_co": max_co}
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
             "wall": s["wall_time_s"], "n": s["problem_size"], "volume_change": s["volume_relative_change"],
-            "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], "refinement": refinement, "reach": reach,
-            "ahead_height": ahead_height, "max_co": max_co,
+            "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], "refinement": refinement, "reach": reach, "behind": behind,
+            "ahead_height": ahead_height, "ahead_from": ahead_from, "max_co": max_co,
             "front_velocity": float(r["frontVelocity"][-1]), "max_velocity": float(r["maxVelocity"][-1]),
             "history": [[float(t), float(f)] for t, f in zip(r["time"], r["front"])]}
 
@@ -88,6 +102,12 @@ def main():
     ap.add_argument("--ahead-height", type=float, default=None,
                     help="mesh height over H0 from H0 ahead of the slide on (cfdDict aheadHeightRatio; default: "
                          "the full height): the long weak slides, which thin as they run out")
+    ap.add_argument("--ahead-from", type=float, default=None,
+                    help="where the lower top starts, metres ahead of the initial front (cfdDict aheadHeightFrom; "
+                    "default: H0)")
+    ap.add_argument("--behind", type=float, default=None,
+                    help="mesh behind the slide's rear [m] (cfdDict behind; default: from slideDAM's upslope "
+                    "spreading, rerun with more where the rear leaves the mesh)")
     ap.add_argument("--max-co", type=float, default=None,
                     help="maxCo and maxAlphaCo of the run (default: the tutorial's controlDict, 0.5)")
     ap.add_argument("--replot", action="store_true", help="rewrite table1.md and table1.png from table1.json, "
@@ -102,7 +122,8 @@ def main():
     for c in cases:
         for n in cells:
             r = run_case(c, n, args.base_refinement, args.processors, work, args.scene_end,
-                         ahead_height=args.ahead_height, max_co=args.max_co)
+                         ahead_height=args.ahead_height, max_co=args.max_co, ahead_from=args.ahead_from,
+                         behind=args.behind)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
     if args.keep and os.path.exists(os.path.join(here, "table1.json")):
@@ -125,6 +146,8 @@ def main():
                                        else "")
         if r.get("ahead_height"):
             mesh += ", %g H0 high ahead" % r["ahead_height"]
+            if r.get("ahead_from") is not None:
+                mesh += " from %g m" % r["ahead_from"]
         if r.get("max_co"):
             mesh += ", maxCo %g" % r["max_co"]
         if "failed" in r:

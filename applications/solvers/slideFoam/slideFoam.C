@@ -209,6 +209,14 @@ int main(int argc, char *argv[])
                 << " reach in system/cfdDict and regenerate the case (slideFoamCase)."
                 << exit(FatalError);
         }
+        if (runout.state().atUpslopeEnd)
+        {
+            FatalErrorInFunction
+                << "the slide's rear reached the upslope end of the mesh at time "
+                << runTime.timeName() << " s (rear " << runout.state().sample.rear << " m): slide"
+                << " would leave through it. Give a longer behind in system/cfdDict and regenerate the case"
+                << " (slideFoamCase)." << exit(FatalError);
+        }
         if (runout.state().atTop)
         {
             FatalErrorInFunction

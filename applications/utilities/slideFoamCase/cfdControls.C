@@ -10,7 +10,7 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "aheadHeightRatio", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling",
+                      "aheadHeightRatio", "aheadHeightFrom", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling",
                       "conservePlugMomentum", "shearBandThickness",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
@@ -41,6 +41,11 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.aheadHeightRatio = d.getScalarInRange("aheadHeightRatio", 0.2, c.heightRatio, true, true,
                                                 "mesh height / H0 ahead of the slide (at most heightRatio)");
+    }
+    if (d.found("aheadHeightFrom"))
+    {
+        c.aheadHeightFrom = d.getScalarInRange("aheadHeightFrom", 0.0, 1e6, true, true,
+                                               "where the lower top starts, ahead of the initial front [m]");
     }
     if (d.found("baseRefinement"))
     {
@@ -92,7 +97,13 @@ std::string CfdControls::describe() const
     os << "setting " << setting << ", H0/" << cellsPerHeight;
     if (baseRefinement > 1) os << " (H0/" << cellsPerHeight*baseRefinement << " on the base)";
     os << ", height " << heightRatio << " H0";
-    if (aheadHeightRatio < heightRatio) os << " (" << aheadHeightRatio << " H0 from H0 ahead of the slide on)";
+    if (aheadHeightRatio < heightRatio)
+    {
+        os << " (" << aheadHeightRatio << " H0 from ";
+        if (aheadHeightFrom < 0.0) os << "H0";
+        else os << aheadHeightFrom << " m";
+        os << " ahead of the slide on)";
+    }
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;

@@ -49,8 +49,9 @@ MeshLayout MeshLayout::build(const scene::Scene& sc, const CfdControls& c, const
     auto uniformRows = [&](double height) { return std::max(1, int(std::ceil((height - m.gradedHeight_)/dx - 1e-9))); };
     const int nUniform = uniformRows(c.heightRatio*H0);
     const int nLower = uniformRows(c.aheadHeightRatio*H0);
-    // The lower top starts H0 ahead of the initial front, on a cell face.
-    const int nStepAhead = std::min(nAhead, c.cellsPerHeight);
+    // The lower top starts aheadHeightFrom (default H0) ahead of the initial front, on a cell face.
+    const int nStepAhead = std::min(nAhead, c.aheadHeightFrom < 0.0 ? c.cellsPerHeight
+                                                                    : int(std::ceil(c.aheadHeightFrom/dx - 1e-9)));
     const bool lowerTop = nLower < nUniform && nStepAhead < nAhead;
     const double sStep = sRear + (nSlide + nStepAhead)*dx;
     if (lowerTop)

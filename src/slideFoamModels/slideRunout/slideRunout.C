@@ -209,6 +209,9 @@ bool Foam::functionObjects::slideRunout::execute()
     // Slide on the base in the last column is leaving through the open downslope
     // end, whether or not the (thin) front there still reaches alpha = 0.5.
     s.atDomainEnd = nCol > 0 && baseAlpha[nCol - 1] >= 0.1;
+    // The same at the open upslope end: a weak slide's rear spreads upslope too
+    // (Table 1 Case 4's by 50 m in 5 s), beyond slideDAM's spreading that sized the mesh.
+    s.atUpslopeEnd = !scene_.slide.rearWall && nCol > 0 && baseAlpha[0] >= 0.1;
     // Slide at the open top (a mesh too low over it) would leave there or be pressed down.
     const label topi = mesh_.boundaryMesh().findPatchID("top");
     if (topi >= 0)

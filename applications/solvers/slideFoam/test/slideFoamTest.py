@@ -147,6 +147,24 @@ def test_flume(work):
           % (sl["final_length_m"], length))
     check(abs(sl["volume_relative_change"]) < 0.005, "lower top: volume change %.2e" % sl["volume_relative_change"])
 
+    # The lower top started further ahead (aheadHeightFrom): the step sits where asked, the flow is the same.
+    later = make_case(FLUME, work, "flumeLowTopLater", control={"endTime": 4.1, "writeInterval": 0.1},
+                      cfd={"cellsPerHeight": 10, "reach": 5, "heightRatio": 1.3, "aheadHeightRatio": 0.75,
+                           "aheadHeightFrom": 1.0})
+    prepare(later)
+    step = re.search(r"high from x = ([-0-9.e+]+) m on", open(os.path.join(later, "log.slideFoamCase")).read())
+    front0 = float(re.search(r"high from x = ([-0-9.e+]+) m on",
+                             open(os.path.join(low, "log.slideFoamCase")).read()).group(1)) - 0.3
+    check(step is not None and abs(float(step.group(1)) - (front0 + 1.0)) < 1e-9,
+          "aheadHeightFrom 1 m: lower top from x = %s m, the initial front at %.4f m" %
+          (step.group(1) if step else "?", front0))
+    run_slidefoam(later)
+    sa = summary(later)
+    check(sl["problem_size"] < sa["problem_size"] < s["problem_size"], "aheadHeightFrom 1 m: %d cells between %d and %d"
+          % (sa["problem_size"], sl["problem_size"], s["problem_size"]))
+    check(abs(sa["final_length_m"]/length - 1) < 0.01, "aheadHeightFrom 1 m: front %.4f m against %.4f m (within 1 %%)"
+          % (sa["final_length_m"], length))
+
     # A top too low for the slurry: a clear error, no summary.
     cut = make_case(FLUME, work, "flumeTopTooLow", control={"endTime": 2, "writeInterval": 0.1},
                     cfd={"cellsPerHeight": 10, "reach": 5, "heightRatio": 1.3, "aheadHeightRatio": 0.2})
@@ -217,6 +235,20 @@ def test_base(work):
     travel_block = centre_of_mass_travel(block, t)
     check(abs(travel_block/exact - 1) < 0.05, "strong block on a frictionless base: centre of mass moved %.3f m, "
           "g sin(theta) t^2/2 = %.3f m (within 5 %%)" % (travel_block, exact))
+
+    # A mesh too short either way: the slide leaving through an open end stops the run
+    # with the cfdDict key to change, and no summary (the runout would be cut short).
+    for end, cfd, key in [("downslope", {"reach": 0.3}, "reach"), ("upslope", {"behind": 0.2}, "behind")]:
+        short = make_case(FLUME, work, "base_short_" + end, scene={"rearWall": "no"},
+                          control={"endTime": 1.5, "writeInterval": 0.5},
+                          cfd=dict({"cellsPerHeight": 10, "reach": 8, "behind": 4}, **cfd))
+        prepare(short)
+        rc = run(short, which("slideFoam"), check=False)
+        log = open(os.path.join(short, "log.slideFoam")).read()
+        check(rc != 0 and ("reached the %s end of the mesh" % end) in log and ("longer %s" % key) in log,
+              "mesh too short %s: exit %d, error names the %s end and %s" % (end, rc, end, key))
+        check(not os.path.exists(os.path.join(short, "postProcessing", "slideFoam", "summary.json")),
+              "mesh too short %s: no summary.json written" % end)
 
 
 def test_remoulding(work):
