@@ -60,7 +60,7 @@ def table1_results():
         if "runout" not in r:
             out[r["case"]].setdefault("CFD", {"failed": True, "cells": 0})
             continue
-        # H0/10 with H0/40 on the base where it was run; a long runout (Case 4) only on a coarser mesh, marked so.
+        # H0/10 with H0/40 on the base where it ran; another mesh (Case 4's H0/20) where H0/10 failed, marked so.
         if "CFD" in out[r["case"]] and out[r["case"]]["CFD"]["cells"] == 10:
             continue
         if r["cells"] == 10 or out[r["case"]].get("CFD", {}).get("failed", True) \
@@ -89,8 +89,8 @@ def table1_section(results, paper):
     lines = ["### Table 1: the three methods against the paper", "",
              "Runout = travel of the front [m]; error against the paper's value for the same method. slideDAM: fast "
              "setting (800 columns); slideMPM: cell H0/10, 4x4 particles (the paper's; where marked, a finer cell that "
-             "a mechanism needs, `mpm/table1.md`); slideFoam: H0/10 with H0/40 on the base (a coarser "
-             "mesh where marked), "
+             "a mechanism needs, `mpm/table1.md`); slideFoam: H0/10 with H0/40 on the base (where marked, the "
+             "mesh a case needs, `cfd/table1.md`), "
              "2 MPI ranks, run as long as slideDAM took. \"moving\": the run reached its end time with the front "
              "still moving faster than restVelocity.", "",
              "| case | paper mechanism | paper DAM | slideDAM | error | paper MPM | slideMPM | error | paper CFD | "
