@@ -159,31 +159,52 @@ std::string MeshLayout::describe() const
     return os.str();
 }
 
-std::vector<double> MeshLayout::cellCentreHeights() const
+std::vector<double> MeshLayout::rowFaceHeights() const
 {
-    std::vector<double> y;
-    double bottom = 0.0;
+    std::vector<double> y = {0.0};
     for (int j = 0; j < nGraded_; ++j)
     {
         const double q = nGraded_ > 1 ? std::pow(refinement_, 1.0/(nGraded_ - 1)) : 1.0;
-        const double h = depth_/refinement_*std::pow(q, j);
-        y.push_back(bottom + 0.5*h);
-        bottom += h;
+        y.push_back(y.back() + depth_/refinement_*std::pow(q, j));
     }
     for (std::size_t l = nGraded_ > 0 ? 1 : 0; l < rows_.size(); ++l)
     {
         const double h = (levels_[l + 1] - levels_[l])/rows_[l];
-        for (int j = 0; j < rows_[l]; ++j) y.push_back(levels_[l] + (j + 0.5)*h);
+        for (int j = 1; j <= rows_[l]; ++j) y.push_back(levels_[l] + j*h);
     }
     return y;
 }
 
-std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
+std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc, double* area) const
 {
+    double total = 0.0;
     // blockMesh's cell order: block by block (layer, then stretch of the base), in each x fastest, then y.
     std::vector<double> alpha;
     alpha.reserve(static_cast<std::size_t>(nCells()));
-    const std::vector<double> heights = cellCentreHeights();
+    const std::vector<double> faces = rowFaceHeights();
+    // Slide coordinates (arc length s, height h normal to the base) of a point of
+    // stretch k at fraction f along it and height y above the base.
+    auto slideCoordinates = [&](std::size_t k, double f, double y, double& s, double& h)
+    {
+        const double X = x_[k] + f*(x_[k + 1] - x_[k]);
+        s = X;
+        h = y;   // planar: x is the arc length, y the height
+        if (polyline_)
+        {
+            const double Y = yBase_[k] + f*(yBase_[k + 1] - yBase_[k]) + y*verticalScale_;
+            sc.base.coordinates(X, Y, s, h);
+        }
+    };
+    auto inside = [&](std::size_t k, double f, double y)
+    {
+        double s, h;
+        slideCoordinates(k, f, y, s, h);
+        return h > 0.0 && h < sc.slide.thickness(s);
+    };
+    // Samples along and across a cut cell: on a planar base the share of each of
+    // nAlong verticals inside is exact; over a polyline's sheared columns nAcross
+    // points per vertical resolve it to a 64th of the cell.
+    constexpr int nAlong = 8, nAcross = 64;
     const int nLayers = static_cast<int>(rows_.size());
     for (int l = 0, j0 = 0; l < nLayers; j0 += rows_[l], ++l)
     {
@@ -193,21 +214,43 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc) const
             const int n = nSegment_[k];
             for (int j = j0; j < j0 + rows_[l]; ++j)
             {
+                const double y0 = faces[j], y1 = faces[j + 1];
                 for (int i = 0; i < n; ++i)
                 {
-                    const double f = (i + 0.5)/n;
-                    const double X = x_[k] + f*(x_[k + 1] - x_[k]);
-                    double s = X, h = heights[j];   // planar: x is the arc length, y the height
-                    if (polyline_)
+                    const double f0 = double(i)/n, f1 = double(i + 1)/n;
+                    const bool corner = inside(k, f0, y0);
+                    // A sheared column's cell has the area of its unsheared rectangle.
+                    const double cellArea = (x_[k + 1] - x_[k])/n*(y1 - y0)*(polyline_ ? verticalScale_ : 1.0);
+                    if (corner == inside(k, f1, y0) && corner == inside(k, f0, y1) && corner == inside(k, f1, y1)
+                        && corner == inside(k, 0.5*(f0 + f1), 0.5*(y0 + y1)))
                     {
-                        const double Y = yBase_[k] + f*(yBase_[k + 1] - yBase_[k]) + heights[j]*verticalScale_;
-                        sc.base.coordinates(X, Y, s, h);
+                        alpha.push_back(corner ? 1.0 : 0.0);
+                        total += corner ? cellArea : 0.0;
+                        continue;
                     }
-                    alpha.push_back(h > 0.0 && h < sc.slide.thickness(s) ? 1.0 : 0.0);
+                    double share = 0.0;
+                    for (int a = 0; a < nAlong; ++a)
+                    {
+                        const double f = f0 + (a + 0.5)/nAlong*(f1 - f0);
+                        if (!polyline_)
+                        {
+                            double s, h;
+                            slideCoordinates(k, f, 0.0, s, h);
+                            const double top = sc.slide.thickness(s);
+                            share += std::clamp((top - y0)/(y1 - y0), 0.0, 1.0);
+                            continue;
+                        }
+                        int in = 0;
+                        for (int b = 0; b < nAcross; ++b) in += inside(k, f, y0 + (b + 0.5)/nAcross*(y1 - y0));
+                        share += double(in)/nAcross;
+                    }
+                    alpha.push_back(share/nAlong);
+                    total += share/nAlong*cellArea;
                 }
             }
         }
     }
+    if (area) *area = total;
     return alpha;
 }
 

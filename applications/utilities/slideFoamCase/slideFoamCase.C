@@ -195,11 +195,15 @@ int main(int argc, char** argv)
         writeFile(caseDir + "/system/blockMeshDict", header("dictionary", "blockMeshDict", "system")
                   + mesh.blockMeshDict(sc.slide.rearWall ? "wall" : "patch"));
         {
-            const std::vector<double> alpha = mesh.slideFraction(sc);
+            double area = 0.0;
+            const std::vector<double> alpha = mesh.slideFraction(sc, &area);
+            std::cout << "  slide area on the mesh " << num(area) << " m2 (the scene's " << num(sc.slide.area())
+                      << " m2)\n" << std::endl;
             std::ostringstream os;
             os << header("volScalarField", "alpha.slide", "0") << "dimensions      [0 0 0 0 0 0 0];\n\n"
-               << "// 1 in the cells whose centre lies in the slide (constant/sceneProperties)\n"
+               << "// The share of each cell inside the slide (constant/sceneProperties)\n"
                << "internalField   nonuniform List<scalar>\n" << alpha.size() << "\n(\n";
+            os.precision(12);   // the cut cells' shares sum to the scene's area to 1e-9
             for (double a : alpha) os << a << "\n";
             os << ")\n;\n\nboundaryField\n{\n" << scalarBoundaries(sc) << "}\n";
             writeFile(caseDir + "/0.orig/alpha.slide", os.str());

@@ -548,6 +548,34 @@ def test_reconstruction(work):
           % (rotated["ourError"], rotated["fvcReconstructError"]))
 
 
+def test_initialVolume(work):
+    # The initial slide's volume on the mesh, summed from the cells' volumes that
+    # OpenFOAM computes, against the scene's area: Table 1 Case 2 (planar, rows
+    # graded from H0/40 to H0/10 whose faces miss the slide's top at 5 m by 2 cm;
+    # the cell-centre test put 200.9 m2 there) and on H0/20 rows graded from H0/40
+    # (top face 5.09 m: 203.6 m2), the escarpment's profile over a polyline's
+    # sheared columns. The cell volumes are read as written, to 8 digits.
+    for name, template, cfd, area, tol in [
+            ("case02", os.path.join(top, "tutorials", "table1", "case02"),
+             {"cellsPerHeight": 10, "baseRefinement": 4}, 200.0, 1e-7),
+            ("case02_H0_20", os.path.join(top, "tutorials", "table1", "case02"),
+             {"cellsPerHeight": 20, "baseRefinement": 2}, 200.0, 1e-7),
+            ("escarpment", os.path.join(top, "tutorials", "mediterraneanEscarpment"), {}, None, 1e-3)]:
+        c = make_case(template, work, "initialVolume_" + name, cfd=cfd)
+        run(c, which("slideDAM"), "-case", ".")
+        prepare(c)
+        run(c, "postProcess", "-func", "writeCellVolumes", "-time", "0")
+        volume = read_field(c, "0", "V")
+        alpha = read_field(c, "0", "alpha.slide")
+        log = open(os.path.join(c, "log.slideFoamCase")).read()
+        scene_area = area if area is not None else float(re.search(r"the scene's ([0-9.eE+-]+) m2", log).group(1))
+        depth = float(re.search(r"cells of ([0-9.eE+-]+) m", log).group(1))
+        on_mesh = float((alpha*volume).sum())/depth
+        cut = int(((alpha > 0) & (alpha < 1)).sum())
+        check(abs(on_mesh/scene_area - 1) < tol, "%s: slide area on the mesh %.6f m2, the scene's %.6f m2 (within "
+              "%.0e; %d cells cut by its surface)" % (name, on_mesh, scene_area, tol, cut))
+
+
 def main():
     name = sys.argv[1]
     work = sys.argv[2] if len(sys.argv) > 2 else tempfile.mkdtemp(prefix="slideFoamTest_")
