@@ -78,7 +78,7 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
             return run_case(c, cells, refinement, processors, work, scene_end, reach, retries - 1, ahead_height,
                             max_co, ahead_from, 3.0*(-rear - length))
         return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "refinement": refinement,
-                "ahead_height": ahead_height, "ahead_from": ahead_from, "max_co": max_co}
+                "ahead_height": ahead_height, "ahead_from": ahead_from, "behind": behind, "max_co": max_co}
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],

@@ -14,8 +14,9 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from slidefoam_io import read_summary, read_runout  # noqa: E402
+from slidefoam_io import read_summary  # noqa: E402
 from runner import slidefoam_env, which  # noqa: E402
+import options  # noqa: E402
 
 SETTINGS = [("reference", None), ("3200 cols", 3200), ("800 cols", 800), ("200 cols", 200), ("50 cols", 50)]
 CASES = [("Krone-Wright flume (front at 4.1 s)", "tutorials/kroneWrightRun15"),
@@ -45,7 +46,7 @@ def run(case, columns, work):
 
 
 def main():
-    quick = "--quick" in sys.argv
+    quick = "--quick" in options.parse(__doc__, flags=("--quick",))
     work = tempfile.mkdtemp(prefix="slideDAM_bench_")
     rows = []
     for title, case in CASES:

@@ -15,12 +15,14 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(TOP, "validation", "lib"))
+import options  # noqa: E402
 CASES = {"Finneidfjord": "finneidfjord", "Mediterranean escarpment": "mediterraneanEscarpment"}
 
 
 def main():
-    args = sys.argv[1:]
-    only = args[args.index("--only") + 1] if "--only" in args else None
+    opts = options.parse(__doc__, flags=("--stored",), valued=("--only",))
+    only = opts.get("--only")
     if only is not None and only not in CASES.values():
         raise SystemExit("--only: one of %s" % ", ".join(CASES.values()))
     path = os.path.join(HERE, "runs.json")
@@ -29,7 +31,7 @@ def main():
         if only is not None and case != only:
             continue
         d = os.path.join(TOP, "tutorials", case)
-        if "--stored" not in sys.argv[1:]:
+        if "--stored" not in opts:
             subprocess.run(["./Allclean"], cwd=d, check=True)
             print("running", d, flush=True)
             subprocess.run(["./Allrun"], cwd=d, check=True)

@@ -25,6 +25,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 from cfdcase import make_case, set_method_entries  # noqa: E402
 from runner import TOP, run_method  # noqa: E402
+import options  # noqa: E402
 
 
 def polyline(segments):
@@ -124,9 +125,9 @@ def table(title, rows, note):
 
 
 def main():
-    args = sys.argv[1:]
+    args = options.parse(__doc__, flags=("--mpm", "--stored"), valued=("--only",))
     mpm = "--mpm" in args
-    only = args[args.index("--only") + 1] if "--only" in args else None
+    only = args.get("--only")
     if only not in (None, "finneidfjord", "escarpment"):
         raise SystemExit("--only: finneidfjord or escarpment")
     stored_path = os.path.join(HERE, "sensitivity.json")
