@@ -139,6 +139,15 @@ def readme(case, row, paper):
                      "`cellsPerHeight 40; particlesPerCell 2;` in `system/mpmDict` (12 minutes on 2 cores) it parts "
                      "into horsts and grabens by 10 s, as the paper's Fig. 8 shows: `validation/snapshots/snapshots.png`, "
                      "`validation/mpm/shearBand.md`.")
+    if case == 4:
+        lines.append("- slideFoam does not reach the end of this case: its layer, 0.3-0.7 m thick at 12-19 m/s, grows a head "
+                     "that throws material into the light ambient, and the run stops at 33-42 s with the error that "
+                     "0.1 % of the slide has left through the mesh's top, on every mesh tried up to H0/20 "
+                     "(`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
+    if case == 5:
+        lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
+                     "about 4 times Case 4's cells, hours on a few cores, and it has not been run "
+                     "(`validation/cfd/README.md`, \"Case 4\").")
     if "spreading" in row["mechanism"] or "shear band" in row["mechanism"]:
         lines.append("- slideDAM runs this case but cannot show it: one velocity profile per column has no shear band, "
                      "no horsts and grabens and no breakaway; the comparison says so.")
