@@ -244,8 +244,11 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc, double* ar
                         for (int b = 0; b < nAcross; ++b) in += inside(k, f, y0 + (b + 0.5)/nAcross*(y1 - y0));
                         share += double(in)/nAcross;
                     }
-                    alpha.push_back(share/nAlong);
-                    total += share/nAlong*cellArea;
+                    // A surface on a row face, which the rows' summed heights miss by round-off, cuts nothing.
+                    double a = share/nAlong;
+                    a = a < 1e-9 ? 0.0 : (a > 1.0 - 1e-9 ? 1.0 : a);
+                    alpha.push_back(a);
+                    total += a*cellArea;
                 }
             }
         }
