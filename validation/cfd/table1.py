@@ -32,19 +32,15 @@ def fatal_error(log):
     return m.group(1).strip() if m else None
 
 
-def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None, retries=2, ahead_height=None,
-             max_co=None, ahead_from=None, behind=None):
+def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
+    """mesh: refinement, ahead_height, ahead_from, reach, behind, max_co (None: the tutorial's or slideDAM's)."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
-    cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement, "processors": processors}
-    if ahead_height:
-        cfd["aheadHeightRatio"] = ahead_height
-    if ahead_from is not None:
-        cfd["aheadHeightFrom"] = ahead_from
-    if reach:
-        cfd["reach"] = "%.1f" % reach
-    if behind:
-        cfd["behind"] = "%.1f" % behind
-    control = {"maxCo": max_co, "maxAlphaCo": max_co} if max_co else None
+    cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": mesh["refinement"], "processors": processors}
+    for key, entry in (("ahead_height", "aheadHeightRatio"), ("ahead_from", "aheadHeightFrom"), ("reach", "reach"),
+                       ("behind", "behind")):
+        if mesh.get(key) is not None:
+            cfd[entry] = "%.6g" % mesh[key]
+    control = {"maxCo": mesh["max_co"], "maxAlphaCo": mesh["max_co"]} if mesh.get("max_co") else None
     # The tutorial's cfdDict with the mesh set: what else it says (a scene's shearBandThickness) is kept.
     d = make_case(src, work, "case%02d_H0_%d" % (c, cells), control=control)
     set_method_entries(d, "cfdDict", cfd)
@@ -60,31 +56,24 @@ def run_case(c, cells, refinement, processors, work, scene_end=False, reach=None
     except RuntimeError as e:
         log = open(os.path.join(d, "log.slideFoam")).read() if os.path.exists(os.path.join(d, "log.slideFoam")) \
             else ""
-        if "downslope end of the mesh" in log and retries > 0:
-            # slideDAM's runout, which sizes the mesh, is no bound on the CFD's (Case 8: slideDAM stops at 47 m,
-            # the CFD's block slides on): regenerate with three times the travel the front had when it left.
-            front = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))["front"][-1]
-            print("Case %d H0/%d: the front left the mesh at %.1f m; rerunning with reach %.1f m"
-                  % (c, cells, front, 3.0*front), flush=True)
-            return run_case(c, cells, refinement, processors, work, scene_end, 3.0*front, retries - 1, ahead_height,
-                            max_co, ahead_from, behind)
-        if "upslope end of the mesh" in log and retries > 0:
-            # The same behind the slide: a weak slide's rear spreads upslope beyond slideDAM's (Case 4).
-            rear = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))["rear"][-1]
-            length = float(re.search(r"length\s+([0-9.eE+-]+)\s*;",
-                                     open(os.path.join(d, "constant", "sceneProperties")).read()).group(1))
-            print("Case %d H0/%d: the rear left the mesh %.1f m upslope of where it started; rerunning with behind "
-                  "%.1f m" % (c, cells, -rear - length, 3.0*(-rear - length)), flush=True)
-            return run_case(c, cells, refinement, processors, work, scene_end, reach, retries - 1, ahead_height,
-                            max_co, ahead_from, 3.0*(-rear - length))
-        return {"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log), "refinement": refinement,
-                "ahead_height": ahead_height, "ahead_from": ahead_from, "behind": behind, "max_co": max_co}
+        runout = os.path.join(d, "postProcessing", "slideFoam", "runout.dat")
+        if retries > 0 and ("downslope end of the mesh" in log or "upslope end of the mesh" in log):
+            # slideDAM's runout and spreading, which size the mesh, bound neither end of the CFD's (Case 8's
+            # block slides on past slideDAM's 47 m; Case 4's rear spreads upslope past slideDAM's): regenerate
+            # with three times the travel the slide had when it left.
+            r = read_runout(runout)
+            key, travel = ("reach", r["front"][-1]) if "downslope end" in log else ("behind", r["rear"][0] - r["rear"][-1])
+            # At least twice the mesh that was too short, where the slide left it at once.
+            longer = max(3.0*travel, 2.0*(mesh.get(key) or 0.0))
+            print("Case %d H0/%d: the slide left the mesh %.1f m from where it started; rerunning with %s %.1f m"
+                  % (c, cells, travel, key, longer), flush=True)
+            return run_case(c, cells, processors, work, dict(mesh, **{key: longer}), scene_end, retries - 1)
+        return dict({"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log)}, **mesh)
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
             "wall": s["wall_time_s"], "n": s["problem_size"], "volume_change": s["volume_relative_change"],
-            "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], "refinement": refinement, "reach": reach, "behind": behind,
-            "ahead_height": ahead_height, "ahead_from": ahead_from, "max_co": max_co,
+            "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], **mesh,
             "front_velocity": float(r["frontVelocity"][-1]), "max_velocity": float(r["maxVelocity"][-1]),
             "history": [[float(t), float(f)] for t, f in zip(r["time"], r["front"])]}
 
@@ -121,9 +110,9 @@ def main():
     results = []
     for c in cases:
         for n in cells:
-            r = run_case(c, n, args.base_refinement, args.processors, work, args.scene_end,
-                         ahead_height=args.ahead_height, max_co=args.max_co, ahead_from=args.ahead_from,
-                         behind=args.behind)
+            mesh = {"refinement": args.base_refinement, "ahead_height": args.ahead_height,
+                    "ahead_from": args.ahead_from, "reach": None, "behind": args.behind, "max_co": args.max_co}
+            r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
     if args.keep and os.path.exists(os.path.join(here, "table1.json")):
