@@ -139,6 +139,11 @@ def readme(case, row, paper):
                      "`cellsPerHeight 40; particlesPerCell 2;` in `system/mpmDict` (12 minutes on 2 cores) it parts "
                      "into horsts and grabens by 10 s, as the paper's Fig. 8 shows: `validation/snapshots/snapshots.png`, "
                      "`validation/mpm/shearBand.md`.")
+    if case == 3:
+        lines.append("- The paper's s_uo for this case is garbled; `table1.csv` reads it as 1 kPa, an inference. At 1 kPa "
+                     "the three methods run 21.0-23.6 m and still creep at 100 s (their deposits, 3.5-3.7 m, are thicker "
+                     "than the 2.84 m that s_uo holds on this slope); each reaches the paper's runout at s_uo 1.07-1.17 "
+                     "kPa (`validation/case3/strength.md`).")
     if case == 4:
         lines.append("- slideFoam does not reach the end of this case: its layer, 0.3-0.7 m thick at 12-19 m/s, grows a head "
                      "that throws material into the light ambient, and the run stops at 33-42 s with the error that "
