@@ -85,6 +85,9 @@ def write(results):
         if r.get("stale"):
             # A stored run of an older slideMPM, too long to repeat with every change: said so, not hidden.
             lines[-1] = lines[-1][:-2] + " (stored: %s) |" % r["stale"]
+        if r.get("source"):
+            # The same set-up run by another script (Table 1's H0/60 row is this study's H0/60 band run).
+            lines[-1] = lines[-1][:-2] + " (run by %s) |" % r["source"]
         if r.get("restartedAt"):
             # A run continued from its written state (slideMPM restarts bit for bit: CTest slideMPM_restart*).
             lines[-1] = lines[-1][:-2] + " (in two parts, restarted at %g s) |" % r["restartedAt"]
