@@ -49,10 +49,10 @@ def run_strength(s_uo, processors, work):
         if app == "slideFoam":
             prepare(d)
             run_slidefoam(d, processors)
+            out = os.path.join(d, "postProcessing", app)
+            s, r = read_summary(os.path.join(out, "summary.json")), read_runout(os.path.join(out, "runout.dat"))
         else:
-            run_method(app, d)
-        out = os.path.join(d, "postProcessing", app)
-        s, r = read_summary(os.path.join(out, "summary.json")), read_runout(os.path.join(out, "runout.dat"))
+            s, r = run_method(app, d)
         rows.append({"method": app, "s_uo": s_uo, "runout": s["runout_m"], "at_rest": s["at_rest"],
                      "end_time": s["end_time_s"], "front_velocity": float(r["frontVelocity"][-1]),
                      "max_thickness": float(r["maxThickness"][-1]), "wall": s["wall_time_s"]})
