@@ -289,6 +289,9 @@ add("mpm-initial-stress-word", "an initial stress slideMPM does not know (lithos
     mpm0[:-1] + ["initialStress lithostatic;", ""], len(mpm0), "initialStress", "slideMPM")
 add("cfd-ahead-from-negative", "the lower top starting behind the initial front (-5 m)", "system/cfdDict",
     cfd0[:-1] + ["aheadHeightFrom -5;", ""], len(cfd0), "aheadHeightFrom", "slideFoamCase")
+add("mpm-purge-state-negative", "a negative number of restart states to keep", "system/mpmDict",
+    [("purgeState       -2;" if s.startswith("purgeState") else s) for s in mpm0], line_of(mpm0, r"^purgeState"),
+    "purgeState", "slideMPM")
 
 
 def main():

@@ -13,7 +13,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
                       "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
-                      "progressInterval"});
+                      "purgeState", "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
     if (c.setting == "fast")
@@ -97,6 +97,11 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     }
     c.writeFields = d.getBool("writeFields", true);
     c.writeState = d.getBool("writeState", true);
+    if (d.found("purgeState"))
+    {
+        c.purgeState = d.getLabel("purgeState");
+        if (c.purgeState < 0) d.fail("purgeState", "must be >= 0 (0 keeps every write's state)");
+    }
     if (d.found("progressInterval"))
     {
         c.progressInterval = d.getScalarInRange("progressInterval", 0.0, 1e6, true, true, "progress interval [s]");

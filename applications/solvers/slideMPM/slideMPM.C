@@ -140,7 +140,7 @@ int main(int argc, char** argv)
         }
         mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points, rows);
         output::RunoutSample last;
-        output::StatePurge purge(caseDir, "slideMPM", rc.purgeWrite);
+        output::StatePurge purge(caseDir, "slideMPM", controls.statesKept(rc.purgeWrite));
         auto write = [&](double t, bool logRow = true)
         {
             const mpm::HostPoints hp(points);

@@ -880,3 +880,32 @@ TEST(SlideMPM, ThinLayerOnTheBaseStaysStill)
         }
     }
 }
+
+// purgeState keeps slideMPM's restart states alone (177 MB a write on the
+// flume at H0/60): absent it follows controlDict's purgeWrite, which would
+// also purge slideFoam's time directories.
+TEST(SlideMPM, PurgeStateOverridesPurgeWriteForStatesOnly)
+{
+    using scene::Dictionary;
+    const mpm::MpmControls absent = mpm::MpmControls::read(Dictionary::parse("setting fast;\n", "system/mpmDict"));
+    EXPECT_EQ(absent.statesKept(0), 0);
+    EXPECT_EQ(absent.statesKept(3), 3);
+    const mpm::MpmControls two =
+        mpm::MpmControls::read(Dictionary::parse("setting fast;\npurgeState 2;\n", "system/mpmDict"));
+    EXPECT_EQ(two.statesKept(0), 2);
+    EXPECT_EQ(two.statesKept(5), 2);
+    const mpm::MpmControls all =
+        mpm::MpmControls::read(Dictionary::parse("setting fast;\npurgeState 0;\n", "system/mpmDict"));
+    EXPECT_EQ(all.statesKept(4), 0);
+    try
+    {
+        mpm::MpmControls::read(Dictionary::parse("setting fast;\npurgeState -1;\n", "system/mpmDict"));
+        ADD_FAILURE() << "purgeState -1 was accepted";
+    }
+    catch (const scene::InputError& e)
+    {
+        EXPECT_EQ(e.key(), "purgeState");
+        EXPECT_EQ(e.line(), 2);
+        EXPECT_EQ(e.file(), "system/mpmDict");
+    }
+}
