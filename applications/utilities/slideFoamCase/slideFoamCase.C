@@ -399,8 +399,12 @@ PIMPLE
                << ";\n\nmethod          simple;\n\ncoeffs\n{\n    n           (" << c.processors << " 1 1);\n}\n";
             writeFile(caseDir + "/system/decomposeParDict", os.str());
         }
+        // What this case was built with, for slideFoam's summary.json (the setting may come from -setting).
+        writeFile(caseDir + "/system/cfdSetUp", header("dictionary", "cfdSetUp", "system")
+                  + "setting         " + c.setting + ";\ncellsPerHeight  " + std::to_string(c.cellsPerHeight)
+                  + ";\nbaseRefinement  " + std::to_string(c.baseRefinement) + ";\n");
         writeFile(caseDir + "/" + (sc.caseName.empty() ? std::string("case") : sc.caseName) + ".foam", "");
-        std::cout << "Wrote system/{blockMeshDict,fvSchemes,fvSolution,decomposeParDict}, "
+        std::cout << "Wrote system/{blockMeshDict,fvSchemes,fvSolution,decomposeParDict,cfdSetUp}, "
                   << "constant/{g,transportProperties,turbulenceProperties}, 0.orig/{U,p_rgh,alpha.slide,xi}\n"
                   << "End" << std::endl;
         return 0;

@@ -102,6 +102,21 @@ Foam::functionObjects::slideRunout::slideRunout
 {
     read(dict);
     buildColumns();
+    const fileName setUp = runTime.globalPath()/"system"/"cfdSetUp";
+    if (Foam::isFile(setUp))
+    {
+        try
+        {
+            const slide::scene::Dictionary d = slide::scene::Dictionary::readFile(setUp);
+            setting_ = d.getWord("setting");
+            cellsPerHeight_ = d.getLabel("cellsPerHeight");
+            baseRefinement_ = d.getLabel("baseRefinement");
+        }
+        catch (const slide::scene::InputError& e)
+        {
+            FatalErrorInFunction << "bad set-up record: " << e.what() << nl << exit(FatalError);
+        }
+    }
     if (Pstream::master())
     {
         const scalar t0 = runTime.startTime().value();
@@ -331,5 +346,11 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
     sum.addNumber("alpha_max", state_.alphaMax);
     sum.addNumber("xi_max", state_.xiMax);
     sum.addBool("reached_domain_end", state_.atDomainEnd);
+    if (!setting_.empty())
+    {
+        sum.addString("setting", setting_);
+        sum.addNumber("cells_per_height", cellsPerHeight_);
+        sum.addNumber("base_refinement", baseRefinement_);
+    }
     sum.write(time_.globalPath());
 }

@@ -117,6 +117,9 @@ def test_flume(work):
     c = flume_case(work, "flume")
     run_slidefoam(c)
     s, r = summary(c), runout(c)
+    check(s.get("cells_per_height") == 10 and s.get("setting") in ("fast", "reference"),
+          "summary.json records the set-up slideFoamCase built (setting %s, H0/%s)"
+          % (s.get("setting"), s.get("cells_per_height")))
     length = s["final_length_m"]
     lubrication = 5.50   # leading-order lubrication front from the end wall at 4.1 s (validation/dam)
     check(abs(length/lubrication - 1) < 0.10, "front at 4.1 s %.3f m from the end wall, lubrication %.2f m (within 10 %%)"
