@@ -7,7 +7,7 @@ against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
                                  [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
-                                 [--max-co 0.25] [--replot]
+                                 [--max-co 0.25] [--xi-per-cell] [--replot]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
 import json
@@ -36,13 +36,16 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
     """mesh: refinement, ahead_height, ahead_from, reach, behind, max_co (None: the tutorial's or slideDAM's)."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": mesh["refinement"], "processors": processors}
+    if mesh.get("xi_per_cell"):
+        cfd["shearBandThickness"] = 0
     for key, entry in (("ahead_height", "aheadHeightRatio"), ("ahead_from", "aheadHeightFrom"), ("reach", "reach"),
                        ("behind", "behind")):
         if mesh.get(key) is not None:
             cfd[entry] = "%.6g" % mesh[key]
     control = {"maxCo": mesh["max_co"], "maxAlphaCo": mesh["max_co"]} if mesh.get("max_co") else None
     # The tutorial's cfdDict with the mesh set: what else it says (a scene's shearBandThickness) is kept.
-    d = make_case(src, work, "case%02d_H0_%d" % (c, cells), control=control)
+    d = make_case(src, work, "case%02d_H0_%d%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else ""),
+                  control=control)
     set_method_entries(d, "cfdDict", cfd)
     run(d, which("slideDAM"), "-case", ".")
     dam = read_summary(os.path.join(d, "postProcessing", "slideDAM", "summary.json"))
@@ -99,6 +102,9 @@ def main():
                     "spreading, rerun with more where the rear leaves the mesh)")
     ap.add_argument("--max-co", type=float, default=None,
                     help="maxCo and maxAlphaCo of the run (default: the tutorial's controlDict, 0.5)")
+    ap.add_argument("--xi-per-cell", action="store_true",
+                    help="xi counts the strain of each cell (cfdDict shearBandThickness 0) instead of the tutorial's "
+                    "shear bands of H0/60: the remoulding Cases 10-13 as the CFD ran them until session 29")
     ap.add_argument("--replot", action="store_true", help="rewrite table1.md and table1.png from table1.json, "
                     "running nothing")
     args = ap.parse_args()
@@ -111,16 +117,18 @@ def main():
     for c in cases:
         for n in cells:
             mesh = {"refinement": args.base_refinement, "ahead_height": args.ahead_height,
-                    "ahead_from": args.ahead_from, "reach": None, "behind": args.behind, "max_co": args.max_co}
+                    "ahead_from": args.ahead_from, "reach": None, "behind": args.behind, "max_co": args.max_co,
+                    "xi_per_cell": args.xi_per_cell}
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
     if args.keep and os.path.exists(os.path.join(here, "table1.json")):
         # Earlier runs of other case/mesh pairs stay in the table.
-        done = {(r["case"], r["cells"]) for r in results}
-        results = [r for r in json.load(open(os.path.join(here, "table1.json")))
-                   if (r["case"], r["cells"]) not in done] + results
-        results.sort(key=lambda r: (r["case"], r["cells"]))
+        def key(r):
+            return r["case"], r["cells"], bool(r.get("xi_per_cell"))
+        done = {key(r) for r in results}
+        results = [r for r in json.load(open(os.path.join(here, "table1.json"))) if key(r) not in done] + results
+        results.sort(key=key)
     json.dump(results, open(os.path.join(here, "table1.json"), "w"), indent=1)
 
     lines = ["# slideFoam: the CFD column of Table 1", "",
@@ -141,6 +149,8 @@ def main():
             mesh += ", %g m behind" % r["behind"]
         if r.get("max_co"):
             mesh += ", maxCo %g" % r["max_co"]
+        if r.get("xi_per_cell"):
+            mesh += ", xi per cell"
         if "failed" in r:
             lines.append("| %d | %s | | %s | failed: %s | | | | | | | |"
                          % (r["case"], mesh, cfd or "-", r.get("reason") or "see the run's log"))
@@ -157,7 +167,7 @@ def main():
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(1, 2, figsize=(12, 4))
     ok = [r for r in results if "failed" not in r]
-    labels = ["C%d H0/%d" % (r["case"], r["cells"]) for r in ok]
+    labels = ["C%d H0/%d%s" % (r["case"], r["cells"], " xi/cell" if r.get("xi_per_cell") else "") for r in ok]
     xs = range(len(ok))
     ax[0].bar([x - 0.2 for x in xs], [paper[r["case"]][1].get("CFD", 0) for r in ok], 0.4, label="paper CFD")
     ax[0].bar([x + 0.2 for x in xs], [r["runout"] for r in ok], 0.4, label="slideFoam")
@@ -168,7 +178,8 @@ def main():
     ax[0].legend()
     for r in ok:
         h = r["history"]
-        ax[1].plot([p[0] for p in h], [p[1] for p in h], label="Case %d H0/%d" % (r["case"], r["cells"]))
+        ax[1].plot([p[0] for p in h], [p[1] for p in h], label="Case %d H0/%d%s"
+                   % (r["case"], r["cells"], ", xi per cell" if r.get("xi_per_cell") else ""))
     ax[1].set_xlabel("time [s]")
     ax[1].set_ylabel("front travel [m]")
     ax[1].legend(fontsize=7)
