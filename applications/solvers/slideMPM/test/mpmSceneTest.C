@@ -881,7 +881,7 @@ TEST(SlideMPM, ThinLayerOnTheBaseStaysStill)
     }
 }
 
-// purgeState keeps slideMPM's restart states alone (177 MB a write on the
+// purgeState keeps slideMPM's restart states alone (188 MB a write on the
 // flume at H0/60): absent it follows controlDict's purgeWrite, which would
 // also purge slideFoam's time directories.
 TEST(SlideMPM, PurgeStateOverridesPurgeWriteForStatesOnly)
