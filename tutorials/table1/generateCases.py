@@ -68,6 +68,9 @@ setting          fast;
 cellsPerHeight   10;
 particlesPerCell 4;
 writeFields      yes;
+// Restart states of the last 2 writes only: a state holds every particle (about
+// 550 bytes each, 250 MB at "setting reference"), and a case writes one a second.
+purgeState       2;
 """
 
 # Cases with remoulding: xi counts bands of the paper's cell, H0/60 (validation/mpm/shearBand.md).
