@@ -46,9 +46,9 @@ def run_case(c, cells, ppc, work, scene=None, numerics=None, tag=""):
         set_entry(os.path.join(d, "constant", "sceneProperties"), k, v)
     # The tutorial's mpmDict with the resolution of this run (its other entries, e.g. a shearBandThickness, kept).
     set_method_entries(d, "mpmDict", {"setting": "fast", "cellsPerHeight": cells, "particlesPerCell": ppc,
-                                      "writeFields": "no", "progressInterval": 30, **(numerics or {})})
-    # One restart state kept: at H0/20 with 4x4 particles Case 4 writes 97 MB a second of its 100 s.
-    set_entry(os.path.join(d, "system", "controlDict"), "purgeWrite", 1)
+                                      "writeFields": "no", "progressInterval": 30,
+                                      # One restart state kept: at H0/20 with 4x4 Case 4 writes 97 MB a second.
+                                      "purgeState": 1, **(numerics or {})})
     p = subprocess.run([which("slideMPM"), "-case", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        env=slidefoam_env())
     log = p.stdout.decode(errors="replace")
