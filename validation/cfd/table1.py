@@ -32,6 +32,11 @@ def fatal_error(log):
     return m.group(1).strip() if m else None
 
 
+def counting(r):
+    """", xi per cell" for a row whose xi counted each cell's strain (--xi-per-cell), else ""."""
+    return ", xi per cell" if r.get("xi_per_cell") else ""
+
+
 def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
     """mesh: refinement, ahead_height, ahead_from, reach, behind, max_co (None: the tutorial's or slideDAM's)."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
@@ -149,8 +154,7 @@ def main():
             mesh += ", %g m behind" % r["behind"]
         if r.get("max_co"):
             mesh += ", maxCo %g" % r["max_co"]
-        if r.get("xi_per_cell"):
-            mesh += ", xi per cell"
+        mesh += counting(r)
         if "failed" in r:
             lines.append("| %d | %s | | %s | failed: %s | | | | | | | |"
                          % (r["case"], mesh, cfd or "-", r.get("reason") or "see the run's log"))
@@ -167,19 +171,18 @@ def main():
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(1, 2, figsize=(12, 4))
     ok = [r for r in results if "failed" not in r]
-    labels = ["C%d H0/%d%s" % (r["case"], r["cells"], " xi/cell" if r.get("xi_per_cell") else "") for r in ok]
+    labels = ["C%d H0/%d%s" % (r["case"], r["cells"], counting(r)) for r in ok]
     xs = range(len(ok))
     ax[0].bar([x - 0.2 for x in xs], [paper[r["case"]][1].get("CFD", 0) for r in ok], 0.4, label="paper CFD")
     ax[0].bar([x + 0.2 for x in xs], [r["runout"] for r in ok], 0.4, label="slideFoam")
     ax[0].set_xticks(list(xs))
-    ax[0].set_xticklabels(labels)
+    ax[0].set_xticklabels(labels, rotation=60, ha="right", fontsize=7)
     ax[0].set_ylabel("runout [m]")
     ax[0].set_yscale("log")
     ax[0].legend()
     for r in ok:
         h = r["history"]
-        ax[1].plot([p[0] for p in h], [p[1] for p in h], label="Case %d H0/%d%s"
-                   % (r["case"], r["cells"], ", xi per cell" if r.get("xi_per_cell") else ""))
+        ax[1].plot([p[0] for p in h], [p[1] for p in h], label="Case %d H0/%d%s" % (r["case"], r["cells"], counting(r)))
     ax[1].set_xlabel("time [s]")
     ax[1].set_ylabel("front travel [m]")
     ax[1].legend(fontsize=7)
