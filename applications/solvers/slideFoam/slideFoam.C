@@ -220,12 +220,12 @@ int main(int argc, char *argv[])
         if (runout.state().atTop)
         {
             FatalErrorInFunction
-                << "slide material reached the open top of the mesh at time " << runTime.timeName()
+                << "slide material reached the top of the mesh at time " << runTime.timeName()
                 << " s: alpha up to " << runout.state().topAlpha << " there (at " << runout.state().topPoint
                 << "), " << runout.state().topOutflow << " m2 of slide out through it ("
                 << 100*runout.state().topOutflow/max(runout.initialVolume(), SMALL) << " % of the slide). Give a larger"
-                << " heightRatio (or aheadHeightRatio, ahead of the slide) in system/cfdDict and regenerate"
-                << " the case (slideFoamCase)." << exit(FatalError);
+                << " heightRatio (or aheadHeightRatio, ahead of the slide) in system/cfdDict, or top slip where"
+                << " only spray reaches it, and regenerate the case (slideFoamCase)." << exit(FatalError);
         }
         if (scene.control.stopAtRest && runout.turned())
         {

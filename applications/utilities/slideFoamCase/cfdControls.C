@@ -10,8 +10,8 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "aheadHeightRatio", "aheadHeightFrom", "baseRefinement", "baseGrowth", "regularisation", "pressureCoupling",
-                      "conservePlugMomentum", "shearBandThickness",
+                      "aheadHeightRatio", "aheadHeightFrom", "top", "baseRefinement", "baseGrowth", "regularisation",
+                      "pressureCoupling", "conservePlugMomentum", "shearBandThickness",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -47,6 +47,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
         c.aheadHeightFrom = d.getScalarInRange("aheadHeightFrom", 0.0, 1e6, true, true,
                                                "where the lower top starts, ahead of the initial front [m]");
     }
+    if (d.found("top")) c.top = d.getWordOneOf("top", {"open", "slip"});
     if (d.found("baseRefinement"))
     {
         c.baseRefinement = d.getLabel("baseRefinement");
@@ -104,6 +105,7 @@ std::string CfdControls::describe() const
         else os << aheadHeightFrom << " m";
         os << " ahead of the slide on)";
     }
+    if (top != "open") os << ", " << top << " top";
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;

@@ -257,7 +257,7 @@ std::vector<double> MeshLayout::slideFraction(const scene::Scene& sc, double* ar
     return alpha;
 }
 
-std::string MeshLayout::blockMeshDict(const std::string& rearType) const
+std::string MeshLayout::blockMeshDict(const std::string& rearType, const std::string& topType) const
 {
     const int nCol = static_cast<int>(x_.size());
     const int nStretch = nCol - 1;
@@ -305,7 +305,7 @@ std::string MeshLayout::blockMeshDict(const std::string& rearType) const
                      + ") (" + v(l, k, 1) + " " + v(l, k + 1, 1) + " " + v(l + 1, k + 1, 1) + " " + v(l + 1, k, 1)
                      + ")";
         }
-        // The step down to a lower top is open to the ambient like the top.
+        // The step down to a lower top is part of the top (open or a lid).
         if (k + 1 < nStretch)
         {
             for (int l = nLayersOver_[k + 1]; l < nLayersOver_[k]; ++l) top += face(l, k + 1, l + 1, k + 1);
@@ -315,7 +315,7 @@ std::string MeshLayout::blockMeshDict(const std::string& rearType) const
     for (int l = 0; l < nLayersOver_.back(); ++l) down += face(l, nCol - 1, l + 1, nCol - 1);
     os << ");\n\nedges\n(\n);\n\nboundary\n(\n"
        << "    base\n    {\n        type wall;\n        faces (" << base << " );\n    }\n"
-       << "    top\n    {\n        type patch;\n        faces (" << top << " );\n    }\n"
+       << "    top\n    {\n        type " << topType << ";\n        faces (" << top << " );\n    }\n"
        << "    upslope\n    {\n        type " << rearType << ";\n        faces (" << up << " );\n    }\n"
        << "    downslope\n    {\n        type patch;\n        faces (" << down << " );\n    }\n"
        << "    frontAndBack\n    {\n        type empty;\n        faces (" << sides << " );\n    }\n"

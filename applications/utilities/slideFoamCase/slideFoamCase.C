@@ -26,6 +26,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <vector>
 #include <sys/stat.h>
 
 using namespace slide;
@@ -86,14 +87,34 @@ double damRearMin(const std::string& caseDir)
     return rearMin;
 }
 
+// The patches closed to flow (base, a rear wall, a lid) and those open to the
+// ambient, as a boundaryField key ("base" or "\"(base|upslope)\"").
+struct PatchGroups
+{
+    std::string walls, open;
+};
+
+PatchGroups patchGroups(const scene::Scene& sc, const cfd::CfdControls& c)
+{
+    std::vector<std::string> walls{"base"}, open{"downslope"};
+    (sc.slide.rearWall ? walls : open).push_back("upslope");
+    (c.top == "slip" ? walls : open).push_back("top");
+    auto key = [](const std::vector<std::string>& names)
+    {
+        if (names.size() == 1) return names.front();
+        std::string k = "\"(";
+        for (std::size_t i = 0; i < names.size(); ++i) k += (i ? "|" : "") + names[i];
+        return k + ")\"";
+    };
+    return {key(walls), key(open)};
+}
+
 // boundaryField entries of alpha.slide and xi: zero gradient on walls, nothing
 // carried in where ambient fluid enters.
-std::string scalarBoundaries(const scene::Scene& sc)
+std::string scalarBoundaries(const PatchGroups& g)
 {
-    const std::string walls = sc.slide.rearWall ? "\"(base|upslope)\"" : "base";
-    const std::string open = sc.slide.rearWall ? "\"(top|downslope)\"" : "\"(top|downslope|upslope)\"";
-    return "    " + walls + "\n    {\n        type            zeroGradient;\n    }\n"
-           "    " + open + "\n    {\n        type            inletOutlet;\n        inletValue      uniform 0;\n"
+    return "    " + g.walls + "\n    {\n        type            zeroGradient;\n    }\n"
+           "    " + g.open + "\n    {\n        type            inletOutlet;\n        inletValue      uniform 0;\n"
            "        value           uniform 0;\n    }\n"
            "    frontAndBack\n    {\n        type            empty;\n    }\n";
 }
@@ -128,6 +149,7 @@ int main(int argc, char** argv)
                          + " s (system/controlDict)");
         }
         const double H0 = sc.slide.height;
+        const PatchGroups patches = patchGroups(sc, c);
         double reach = c.reach;
         std::string reachFrom = "system/cfdDict reach";
         if (reach <= 0.0)
@@ -193,7 +215,8 @@ int main(int argc, char** argv)
 
         // --- mesh and the slide's initial extent
         writeFile(caseDir + "/system/blockMeshDict", header("dictionary", "blockMeshDict", "system")
-                  + mesh.blockMeshDict(sc.slide.rearWall ? "wall" : "patch"));
+                  + mesh.blockMeshDict(sc.slide.rearWall ? "wall" : "patch",
+                                                       c.top == "slip" ? "wall" : "patch"));
         {
             double area = 0.0;
             const std::vector<double> alpha = mesh.slideFraction(sc, &area);
@@ -205,7 +228,7 @@ int main(int argc, char** argv)
                << "internalField   nonuniform List<scalar>\n" << alpha.size() << "\n(\n";
             os.precision(12);   // the cut cells' shares sum to the scene's area to 1e-9
             for (double a : alpha) os << a << "\n";
-            os << ")\n;\n\nboundaryField\n{\n" << scalarBoundaries(sc) << "}\n";
+            os << ")\n;\n\nboundaryField\n{\n" << scalarBoundaries(patches) << "}\n";
             writeFile(caseDir + "/0.orig/alpha.slide", os.str());
         }
         // --- physics
@@ -261,27 +284,28 @@ int main(int argc, char** argv)
                << "internalField   uniform (0 0 0);\n\nboundaryField\n{\n"
                << "    base\n    {\n" << baseU << "    }\n"
                << "    upslope\n    {\n" << rearU << "    }\n"
-               << "    \"(top|downslope)\"\n    {\n        type            pressureInletOutletVelocity;\n"
+               << "    " << (c.top == "slip" ? "downslope" : "\"(top|downslope)\"")
+               << "\n    {\n        type            pressureInletOutletVelocity;\n"
                << "        value           uniform (0 0 0);\n    }\n"
+               << (c.top == "slip" ? "    top\n    {\n        type            slip;   // cfdDict top slip: a lid\n    }\n"
+                                   : "")
                << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
             writeFile(caseDir + "/0.orig/U", os.str());
         }
-        const std::string openOrWall = sc.slide.rearWall ? "\"(base|upslope)\"" : "base";
-        const std::string openPatches = sc.slide.rearWall ? "\"(top|downslope)\"" : "\"(top|downslope|upslope)\"";
         {
             std::ostringstream os;
             os << header("volScalarField", "p_rgh", "0") << "dimensions      [1 -1 -2 0 0 0 0];\n\n"
                << "internalField   uniform 0;\n\nboundaryField\n{\n"
-               << "    " << openOrWall << "\n    {\n        type            fixedFluxPressure;\n"
+               << "    " << patches.walls << "\n    {\n        type            fixedFluxPressure;\n"
                << "        value           uniform 0;\n    }\n"
-               << "    " << openPatches << "\n    {\n        type            totalPressure;\n"
+               << "    " << patches.open << "\n    {\n        type            totalPressure;\n"
                << "        p0              uniform 0;\n    }\n"
                << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
             writeFile(caseDir + "/0.orig/p_rgh", os.str());
         }
         writeFile(caseDir + "/0.orig/xi", header("volScalarField", "xi", "0")
                   + "dimensions      [0 0 0 0 0 0 0];\n\ninternalField   uniform 0;\n\nboundaryField\n{\n"
-                  + scalarBoundaries(sc) + "}\n");
+                  + scalarBoundaries(patches) + "}\n");
         // --- numerics
         writeFile(caseDir + "/system/fvSchemes", header("dictionary", "fvSchemes", "system") +
 R"(ddtSchemes
@@ -402,7 +426,7 @@ PIMPLE
         // What this case was built with, for slideFoam's summary.json (the setting may come from -setting).
         writeFile(caseDir + "/system/cfdSetUp", header("dictionary", "cfdSetUp", "system")
                   + "setting         " + c.setting + ";\ncellsPerHeight  " + std::to_string(c.cellsPerHeight)
-                  + ";\nbaseRefinement  " + std::to_string(c.baseRefinement) + ";\n");
+                  + ";\nbaseRefinement  " + std::to_string(c.baseRefinement) + ";\ntop             " + c.top + ";\n");
         writeFile(caseDir + "/" + (sc.caseName.empty() ? std::string("case") : sc.caseName) + ".foam", "");
         std::cout << "Wrote system/{blockMeshDict,fvSchemes,fvSolution,decomposeParDict,cfdSetUp}, "
                   << "constant/{g,transportProperties,turbulenceProperties}, 0.orig/{U,p_rgh,alpha.slide,xi}\n"

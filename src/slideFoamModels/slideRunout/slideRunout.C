@@ -111,6 +111,7 @@ Foam::functionObjects::slideRunout::slideRunout
             setting_ = d.getWord("setting");
             cellsPerHeight_ = d.getLabel("cellsPerHeight");
             baseRefinement_ = d.getLabel("baseRefinement");
+            top_ = d.getWord("top", "open");
         }
         catch (const slide::scene::InputError& e)
         {
@@ -234,6 +235,7 @@ bool Foam::functionObjects::slideRunout::execute()
         const labelUList& topCells = mesh_.boundary()[topi].faceCells();
         forAll(topCells, facei)
         {
+            s.topVolume += alpha[topCells[facei]]*mesh_.V()[topCells[facei]];
             if (alpha[topCells[facei]] > s.topAlpha)
             {
                 s.topAlpha = alpha[topCells[facei]];
@@ -243,6 +245,7 @@ bool Foam::functionObjects::slideRunout::execute()
     }
     const scalar localTopAlpha = s.topAlpha;
     reduce(s.topAlpha, maxOp<scalar>());
+    s.topVolume = returnReduce(s.topVolume, sumOp<scalar>())/depth_;
     // The step's slide flux (MULES's, which slideFoam registers as alphaPhi0.<phase>) through the top.
     const surfaceScalarField* alphaPhi =
         findObject<surfaceScalarField>(IOobject::groupName("alphaPhi0", alpha.group()));
@@ -275,6 +278,7 @@ bool Foam::functionObjects::slideRunout::execute()
     s.alphaMax = aMax;
     s.xiMax = xiMax;
     if (initialVolume_ < 0) initialVolume_ = s.volume;
+    topShareMax_ = max(topShareMax_, s.topVolume/max(initialVolume_, VSMALL));
     state_ = s;
 
     // As slideMPM and slideDAM end a hydroplaning run where the downslope motion stops.
@@ -346,11 +350,13 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
     sum.addNumber("alpha_max", state_.alphaMax);
     sum.addNumber("xi_max", state_.xiMax);
     sum.addBool("reached_domain_end", state_.atDomainEnd);
+    sum.addNumber("top_cells_slide_share_max", topShareMax_);
     if (!setting_.empty())
     {
         sum.addString("setting", setting_);
         sum.addNumber("cells_per_height", cellsPerHeight_);
         sum.addNumber("base_refinement", baseRefinement_);
+        sum.addString("top", top_);
     }
     sum.write(time_.globalPath());
 }

@@ -169,13 +169,42 @@ def test_flume(work):
     check(abs(sa["final_length_m"]/length - 1) < 0.01, "aheadHeightFrom 1 m: front %.4f m against %.4f m (within 1 %%)"
           % (sa["final_length_m"], length))
 
+    # The same mesh closed by a lid (cfdDict top slip): where no slide reaches the top, the same flow.
+    lid = make_case(FLUME, work, "flumeLid", control={"endTime": 4.1, "writeInterval": 0.1},
+                    cfd={"cellsPerHeight": 10, "reach": 5, "heightRatio": 1.3, "aheadHeightRatio": 0.75,
+                         "top": "slip"})
+    prepare(lid)
+    boundary = open(os.path.join(lid, "constant", "polyMesh", "boundary")).read()
+    check(re.search(r"top\s*\{\s*type\s+wall;", boundary) is not None
+          and re.search(r"top\s*\{\s*type\s+slip;", open(os.path.join(lid, "0", "U")).read()) is not None,
+          "top slip: the top is a wall patch with a slip velocity")
+    run_slidefoam(lid)
+    sd = summary(lid)
+    check(sd.get("top") == "slip" and sl.get("top") == "open", "summary.json records the top (%s, %s)"
+          % (sd.get("top"), sl.get("top")))
+    check(abs(sd["final_length_m"]/sl["final_length_m"] - 1) < 0.01, "top slip: front %.4f m against %.4f m open "
+          "(within 1 %%)" % (sd["final_length_m"], sl["final_length_m"]))
+    check(abs(sd["volume_relative_change"]) < 0.005, "top slip: volume change %.2e" % sd["volume_relative_change"])
+    check(0 <= sd["top_cells_slide_share_max"] < 0.01 and 0 <= sl["top_cells_slide_share_max"] < 0.01,
+          "no more than 1 %% of the slide in the top cells (lid %.2e, open %.2e)"
+          % (sd["top_cells_slide_share_max"], sl["top_cells_slide_share_max"]))
+
+    # A top too low for the slurry: a clear error, no summary, with a lid as without one.
+    lidCut = make_case(FLUME, work, "flumeLidTooLow", control={"endTime": 2, "writeInterval": 0.1},
+                       cfd={"cellsPerHeight": 10, "reach": 5, "heightRatio": 1.3, "aheadHeightRatio": 0.2,
+                            "top": "slip"})
+    prepare(lidCut)
+    rc = run(lidCut, which("slideFoam"), check=False)
+    log = open(os.path.join(lidCut, "log.slideFoam")).read()
+    check(rc != 0 and "reached the top of the mesh" in log, "slide at a lid: exit %d, error names the top" % rc)
+
     # A top too low for the slurry: a clear error, no summary.
     cut = make_case(FLUME, work, "flumeTopTooLow", control={"endTime": 2, "writeInterval": 0.1},
                     cfd={"cellsPerHeight": 10, "reach": 5, "heightRatio": 1.3, "aheadHeightRatio": 0.2})
     prepare(cut)
     rc = run(cut, which("slideFoam"), check=False)
     log = open(os.path.join(cut, "log.slideFoam")).read()
-    check(rc != 0 and "reached the open top of the mesh" in log and "aheadHeightRatio" in log,
+    check(rc != 0 and "reached the top of the mesh" in log and "aheadHeightRatio" in log,
           "slide at the top: exit %d, error names the top and aheadHeightRatio" % rc)
     check(not os.path.exists(os.path.join(cut, "postProcessing", "slideFoam", "summary.json")),
           "slide at the top: no summary.json written")
