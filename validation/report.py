@@ -71,7 +71,10 @@ def table1_results():
                                      "mechanism": "-", "wall": r["wall"], "cells": r["cells"],
                                      "history": [[t, f, math.nan] for t, f in r.get("history", [])],
                                      "setup": "H0/%d, H0/%d on the base" % (r["cells"], r["cells"]*r["refinement"]),
-                                     "note": "" if r["cells"] == 10 else ", H0/%d" % r["cells"]}
+                                     "note": ("" if r["cells"] == 10 else ", H0/%d" % r["cells"])
+                                     + (", lid on top" if r.get("top") == "slip" else "")
+                                     + (", smeared: alpha max %.2f" % r["alpha_max"]
+                                        if r.get("alpha_max", 1.0) < 0.9 else "")}
     return out
 
 
