@@ -7,7 +7,8 @@ against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
                                  [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
-                                 [--max-co 0.25] [--xi-per-cell] [--top slip] [--replot]
+                                 [--max-co 0.25] [--xi-per-cell] [--top slip] [--reach 1600] [--end-time 100]
+                                 [--replot]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
 import json
@@ -51,6 +52,8 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
         cfd["shearBandThickness"] = 0
     if mesh.get("top"):
         cfd["top"] = mesh["top"]
+    if mesh.get("end_time"):
+        cfd["endTime"] = "%.6g" % mesh["end_time"]
     for key, entry in (("ahead_height", "aheadHeightRatio"), ("ahead_from", "aheadHeightFrom"), ("reach", "reach"),
                        ("behind", "behind")):
         if mesh.get(key) is not None:
@@ -120,6 +123,12 @@ def main():
     ap.add_argument("--xi-per-cell", action="store_true",
                     help="xi counts the strain of each cell (cfdDict shearBandThickness 0) instead of the tutorial's "
                     "shear bands of H0/60: the remoulding Cases 10-13 as the CFD ran them until session 29")
+    ap.add_argument("--reach", type=float, default=None,
+                    help="mesh ahead of the initial front [m] (cfdDict reach; default: from slideDAM's runout): with "
+                    "--end-time, a mesh as long as the slide gets by then")
+    ap.add_argument("--end-time", type=float, default=None,
+                    help="slideFoam stops here [s] (cfdDict endTime): part of a run the CFD cannot follow to the end "
+                    "here")
     ap.add_argument("--top", choices=["open", "slip"], default=None,
                     help="the mesh's top (cfdDict top; default open): slip closes it with a lid that keeps the spray "
                     "a fast thin head throws into the light ambient (Case 4) in the domain")
@@ -135,8 +144,8 @@ def main():
     for c in cases:
         for n in cells:
             mesh = {"refinement": args.base_refinement, "ahead_height": args.ahead_height,
-                    "ahead_from": args.ahead_from, "reach": None, "behind": args.behind, "max_co": args.max_co,
-                    "xi_per_cell": args.xi_per_cell, "top": args.top}
+                    "ahead_from": args.ahead_from, "reach": args.reach, "behind": args.behind, "max_co": args.max_co,
+                    "xi_per_cell": args.xi_per_cell, "top": args.top, "end_time": args.end_time}
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
