@@ -38,6 +38,21 @@ def counting(r):
     return ", xi per cell" if r.get("xi_per_cell") else ""
 
 
+# Mesh and run options passed to cfdDict as numbers: (option and row key, cfdDict entry, help).
+CFD_ENTRIES = [
+    ("ahead_height", "aheadHeightRatio", "mesh height over H0 from H0 ahead of the slide on (cfdDict aheadHeightRatio; "
+     "default: the full height): the long weak slides, which thin as they run out"),
+    ("ahead_from", "aheadHeightFrom", "where the lower top starts, metres ahead of the initial front (cfdDict "
+     "aheadHeightFrom; default: H0)"),
+    ("behind", "behind", "mesh behind the slide's rear [m] (cfdDict behind; default: from slideDAM's upslope "
+     "spreading, rerun with more where the rear leaves the mesh)"),
+    ("reach", "reach", "mesh ahead of the initial front [m] (cfdDict reach; default: from slideDAM's runout): with "
+     "--end-time, a mesh as long as the slide gets by then"),
+    ("end_time", "endTime", "slideFoam stops here [s] (cfdDict endTime): part of a run the CFD cannot follow to the "
+     "end here"),
+]
+
+
 def smeared(r):
     """A note where no cell of the slide is nearly pure at the end (alpha max below 0.9): the slide has mixed into
     the ambient over the mesh, and its alpha = 0.5 front is that of a mixture (Table 1 Case 4 at H0/10)."""
@@ -45,17 +60,14 @@ def smeared(r):
 
 
 def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
-    """mesh: refinement, ahead_height, ahead_from, reach, behind, max_co (None: the tutorial's or slideDAM's)."""
+    """mesh: refinement, max_co, xi_per_cell, top and CFD_ENTRIES' keys (None: the tutorial's or slideDAM's)."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": mesh["refinement"], "processors": processors}
     if mesh.get("xi_per_cell"):
         cfd["shearBandThickness"] = 0
     if mesh.get("top"):
         cfd["top"] = mesh["top"]
-    if mesh.get("end_time"):
-        cfd["endTime"] = "%.6g" % mesh["end_time"]
-    for key, entry in (("ahead_height", "aheadHeightRatio"), ("ahead_from", "aheadHeightFrom"), ("reach", "reach"),
-                       ("behind", "behind")):
+    for key, entry, _ in CFD_ENTRIES:
         if mesh.get(key) is not None:
             cfd[entry] = "%.6g" % mesh[key]
     control = {"maxCo": mesh["max_co"], "maxAlphaCo": mesh["max_co"]} if mesh.get("max_co") else None
@@ -109,26 +121,13 @@ def main():
     ap.add_argument("--scene-end", action="store_true",
                     help="run to the scene's end time (stopping at rest) instead of as long as slideDAM took: "
                          "for the strong slides, whose faces slideDAM collapses in seconds")
-    ap.add_argument("--ahead-height", type=float, default=None,
-                    help="mesh height over H0 from H0 ahead of the slide on (cfdDict aheadHeightRatio; default: "
-                         "the full height): the long weak slides, which thin as they run out")
-    ap.add_argument("--ahead-from", type=float, default=None,
-                    help="where the lower top starts, metres ahead of the initial front (cfdDict aheadHeightFrom; "
-                    "default: H0)")
-    ap.add_argument("--behind", type=float, default=None,
-                    help="mesh behind the slide's rear [m] (cfdDict behind; default: from slideDAM's upslope "
-                    "spreading, rerun with more where the rear leaves the mesh)")
+    for key, _, text in CFD_ENTRIES:
+        ap.add_argument("--" + key.replace("_", "-"), type=float, default=None, help=text)
     ap.add_argument("--max-co", type=float, default=None,
                     help="maxCo and maxAlphaCo of the run (default: the tutorial's controlDict, 0.5)")
     ap.add_argument("--xi-per-cell", action="store_true",
                     help="xi counts the strain of each cell (cfdDict shearBandThickness 0) instead of the tutorial's "
                     "shear bands of H0/60: the remoulding Cases 10-13 as the CFD ran them until session 29")
-    ap.add_argument("--reach", type=float, default=None,
-                    help="mesh ahead of the initial front [m] (cfdDict reach; default: from slideDAM's runout): with "
-                    "--end-time, a mesh as long as the slide gets by then")
-    ap.add_argument("--end-time", type=float, default=None,
-                    help="slideFoam stops here [s] (cfdDict endTime): part of a run the CFD cannot follow to the end "
-                    "here")
     ap.add_argument("--top", choices=["open", "slip"], default=None,
                     help="the mesh's top (cfdDict top; default open): slip closes it with a lid that keeps the spray "
                     "a fast thin head throws into the light ambient (Case 4) in the domain")
@@ -143,9 +142,8 @@ def main():
     results = []
     for c in cases:
         for n in cells:
-            mesh = {"refinement": args.base_refinement, "ahead_height": args.ahead_height,
-                    "ahead_from": args.ahead_from, "reach": args.reach, "behind": args.behind, "max_co": args.max_co,
-                    "xi_per_cell": args.xi_per_cell, "top": args.top, "end_time": args.end_time}
+            mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES}, refinement=args.base_refinement,
+                        max_co=args.max_co, xi_per_cell=args.xi_per_cell, top=args.top)
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
