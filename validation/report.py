@@ -73,7 +73,7 @@ def table1_results():
                                      "setup": "H0/%d, H0/%d on the base" % (r["cells"], r["cells"]*r["refinement"]),
                                      "note": ("" if r["cells"] == 10 else ", H0/%d" % r["cells"])
                                      + (", lid on top" if r.get("top") == "slip" else "")
-                                     + (", smeared: alpha max %.2f" % r["alpha_max"]
+                                     + (", unresolved: alpha max %.2f" % r["alpha_max"]
                                         if r.get("alpha_max", 1.0) < 0.9 else "")}
     return out
 

@@ -53,10 +53,11 @@ CFD_ENTRIES = [
 ]
 
 
-def smeared(r):
-    """A note where no cell of the slide is nearly pure at the end (alpha max below 0.9): the slide has mixed into
-    the ambient over the mesh, and its alpha = 0.5 front is that of a mixture (Table 1 Case 4 at H0/10)."""
-    return " (smeared: alpha max %.2f)" % r["alpha_max"] if r.get("alpha_max", 1.0) < 0.9 else ""
+def unresolved(r):
+    """A note where no cell is nearly full of slide at the end (alpha max below 0.9): the slide is thinner than its
+    cells on the base (Table 1 Case 4 at H0/10: a layer 0.1-0.2 m thick in cells 0.25 m high), and a front read where
+    alpha crosses 0.5 on the base is not the slide's."""
+    return " (unresolved: alpha max %.2f)" % r["alpha_max"] if r.get("alpha_max", 1.0) < 0.9 else ""
 
 
 def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
@@ -182,7 +183,7 @@ def main():
                          % (r["case"], mesh, cfd or "-", r.get("reason") or "see the run's log"))
             continue
         err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd else "-"
-        rest = ("yes" if r["at_rest"] else "no") + smeared(r)
+        rest = ("yes" if r["at_rest"] else "no") + unresolved(r)
         lines.append("| %d | %s | %d | %s | %.1f | %s | %s | %.0f | %.2g | %.1e | %.1f | %.0f |"
                      % (r["case"], mesh, r["n"], cfd or "-", r["runout"], err, rest,
                         r["end_time"], r["front_velocity"], r["volume_change"], r["dam_runout"], r["wall"]))

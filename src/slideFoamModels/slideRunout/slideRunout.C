@@ -329,9 +329,10 @@ void Foam::functionObjects::slideRunout::record() const
 void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, const bool atRest) const
 {
     const label nCells = returnReduce(mesh_.nCells(), sumOp<label>());
-    // How much of the slide is still in cells that are mostly slide: a thin fast
-    // layer a few cells thick mixes into the ambient (Table 1 Case 4 at H0/10 kept
-    // a quarter of it by 193 s), and its alpha = 0.5 front is then that of a mixture.
+    // How much of the slide is in cells that are mostly slide: a layer thinner than
+    // its cells (Table 1 Case 4 at H0/10 kept a quarter of it by 193 s, 0.1-0.2 m
+    // thick in cells 0.25 m high) or mixed into the ambient is not resolved, and its
+    // alpha = 0.5 front on the base is not the slide's.
     const volScalarField& alpha = lookupObject<volScalarField>(alphaName_);
     scalar coherent = 0, total = 0;
     forAll(alpha, celli)
