@@ -171,6 +171,8 @@ def main():
             mesh += ", %g H0 high ahead" % r["ahead_height"]
             if r.get("ahead_from") is not None:
                 mesh += " from %g m" % r["ahead_from"]
+        if r.get("reach"):
+            mesh += ", %.0f m ahead" % r["reach"]
         if r.get("behind"):
             mesh += ", %g m behind" % r["behind"]
         if r.get("max_co"):
