@@ -150,8 +150,11 @@ def readme(case, row, paper):
     if case == 4:
         lines.append("- slideFoam does not reach the end of this case: its layer, 0.3-0.7 m thick at 12-19 m/s, grows a head "
                      "that throws material into the light ambient, and the run stops at 33-42 s with the error that "
-                     "0.1 % of the slide has left through the mesh's top, on every mesh tried up to H0/20 "
-                     "(`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
+                     "0.1 % of the slide has left through the mesh's top, on every mesh tried up to H0/20. With "
+                     "`top slip;` in `system/cfdDict` (a lid) it runs on, but the layer thins towards its yield "
+                     "thickness, 0.14 m: on 0.25 m base cells it runs on unresolved (2410 m, still 10.6 m/s at 193 s), "
+                     "and with H0/20 and 0.125 m base cells the front was at 1239 m at 100 s with the layer behind it "
+                     "coming to rest (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
         lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
                      "about 4 times Case 4's cells, hours on a few cores, and it has not been run "
