@@ -153,8 +153,8 @@ def readme(case, row, paper):
                      "0.1 % of the slide has left through the mesh's top, on every mesh tried up to H0/20. With "
                      "`top slip;` in `system/cfdDict` (a lid) it runs on, but the layer thins towards its yield "
                      "thickness, 0.14 m: on 0.25 m base cells it runs on unresolved (2410 m, still 10.6 m/s at 193 s), "
-                     "and with H0/20 and 0.125 m base cells the front was at 1239 m at 100 s with the layer behind it "
-                     "coming to rest (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
+                     "and with H0/20 and 0.125 m base cells the front stopped at 1331 m at 119 s with a second surge "
+                     "running down the deposit behind it at 125 s (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
         lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
                      "about 4 times Case 4's cells, hours on a few cores, and it has not been run "
