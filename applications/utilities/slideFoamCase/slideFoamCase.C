@@ -150,6 +150,7 @@ int main(int argc, char** argv)
         }
         const double H0 = sc.slide.height;
         const PatchGroups patches = patchGroups(sc, c);
+        const bool lid = c.top == "slip";
         double reach = c.reach;
         std::string reachFrom = "system/cfdDict reach";
         if (reach <= 0.0)
@@ -216,7 +217,7 @@ int main(int argc, char** argv)
         // --- mesh and the slide's initial extent
         writeFile(caseDir + "/system/blockMeshDict", header("dictionary", "blockMeshDict", "system")
                   + mesh.blockMeshDict(sc.slide.rearWall ? "wall" : "patch",
-                                                       c.top == "slip" ? "wall" : "patch"));
+                                                       lid ? "wall" : "patch"));
         {
             double area = 0.0;
             const std::vector<double> alpha = mesh.slideFraction(sc, &area);
@@ -284,10 +285,10 @@ int main(int argc, char** argv)
                << "internalField   uniform (0 0 0);\n\nboundaryField\n{\n"
                << "    base\n    {\n" << baseU << "    }\n"
                << "    upslope\n    {\n" << rearU << "    }\n"
-               << "    " << (c.top == "slip" ? "downslope" : "\"(top|downslope)\"")
+               << "    " << (lid ? "downslope" : "\"(top|downslope)\"")
                << "\n    {\n        type            pressureInletOutletVelocity;\n"
                << "        value           uniform (0 0 0);\n    }\n"
-               << (c.top == "slip" ? "    top\n    {\n        type            slip;   // cfdDict top slip: a lid\n    }\n"
+               << (lid ? "    top\n    {\n        type            slip;   // cfdDict top slip: a lid\n    }\n"
                                    : "")
                << "    frontAndBack\n    {\n        type            empty;\n    }\n}\n";
             writeFile(caseDir + "/0.orig/U", os.str());

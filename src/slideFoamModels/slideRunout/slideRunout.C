@@ -233,9 +233,13 @@ bool Foam::functionObjects::slideRunout::execute()
     if (topi >= 0)
     {
         const labelUList& topCells = mesh_.boundary()[topi].faceCells();
+        // A cell in the corner of a lower top's step has two faces on the top: counted once.
+        boolList counted(mesh_.nCells(), false);
         forAll(topCells, facei)
         {
-            s.topVolume += alpha[topCells[facei]]*mesh_.V()[topCells[facei]];
+            const label celli = topCells[facei];
+            if (!counted[celli]) s.topVolume += alpha[celli]*mesh_.V()[celli];
+            counted[celli] = true;
             if (alpha[topCells[facei]] > s.topAlpha)
             {
                 s.topAlpha = alpha[topCells[facei]];
