@@ -25,6 +25,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "lib"))
 from paper import paper_table  # noqa: E402
+from slidefoam_io import unresolved  # noqa: E402
 sys.path.insert(0, os.path.join(HERE, "mpm"))
 from table1 import FINE as MPM_FINE  # noqa: E402
 
@@ -59,7 +60,7 @@ def table1_results():
     # Per case: a resolved run first (no slide thinner than its cells at the end, alpha max >= 0.9), then H0/10 with
     # H0/40 on the base, then the finest mesh (Case 4's H0/20 beside its unresolved H0/10), marked so.
     def preference(r):
-        return r.get("alpha_max", 1.0) >= 0.9, r["cells"] == 10, r["cells"]
+        return not unresolved(r), r["cells"] == 10, r["cells"]
     chosen = {}
     for r in load("cfd/table1.json") or []:
         if r.get("xi_per_cell"):
@@ -75,7 +76,7 @@ def table1_results():
                          "setup": "H0/%d, H0/%d on the base" % (r["cells"], r["cells"]*r["refinement"]),
                          "note": ("" if r["cells"] == 10 else ", H0/%d" % r["cells"])
                          + (", lid on top" if r.get("top") == "slip" else "")
-                         + (", unresolved: alpha max %.2f" % r["alpha_max"] if r.get("alpha_max", 1.0) < 0.9 else "")}
+                         + (", unresolved: alpha max %.2f" % r["alpha_max"] if unresolved(r) else "")}
     return out
 
 

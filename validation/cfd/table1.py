@@ -24,7 +24,7 @@ sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
 from paper import paper_table  # noqa: E402
 from runner import which  # noqa: E402
-from slidefoam_io import read_summary, read_runout  # noqa: E402
+from slidefoam_io import read_summary, read_runout, unresolved  # noqa: E402
 
 
 def fatal_error(log):
@@ -53,11 +53,8 @@ CFD_ENTRIES = [
 ]
 
 
-def unresolved(r):
-    """A note where no cell is nearly full of slide at the end (alpha max below 0.9): the slide is thinner than its
-    cells on the base (Table 1 Case 4 at H0/10: a layer 0.1-0.2 m thick in cells 0.25 m high), and a front read where
-    alpha crosses 0.5 on the base is not the slide's."""
-    return " (unresolved: alpha max %.2f)" % r["alpha_max"] if r.get("alpha_max", 1.0) < 0.9 else ""
+def unresolved_note(r):
+    return " (unresolved: alpha max %.2f)" % r["alpha_max"] if unresolved(r) else ""
 
 
 def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
@@ -185,7 +182,7 @@ def main():
                          % (r["case"], mesh, cfd or "-", r.get("reason") or "see the run's log"))
             continue
         err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd else "-"
-        rest = ("yes" if r["at_rest"] else "no") + unresolved(r)
+        rest = ("yes" if r["at_rest"] else "no") + unresolved_note(r)
         lines.append("| %d | %s | %d | %s | %.1f | %s | %s | %.0f | %.2g | %.1e | %.1f | %.0f |"
                      % (r["case"], mesh, r["n"], cfd or "-", r["runout"], err, rest,
                         r["end_time"], r["front_velocity"], r["volume_change"], r["dam_runout"], r["wall"]))

@@ -14,6 +14,13 @@ def read_runout(path):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
+def unresolved(row):
+    """True where no cell of a slideFoam run is nearly full of slide at the end (alpha max below 0.9): the slide is
+    thinner than its cells on the base (Table 1 Case 4 at H0/10: a layer 0.1-0.2 m thick in cells 0.25 m high), and
+    a front read where alpha crosses 0.5 on the base is not the slide's."""
+    return row.get("alpha_max", 1.0) < 0.9
+
+
 def read_summary(path):
     with open(path) as f:
         return json.load(f)
