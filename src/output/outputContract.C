@@ -63,7 +63,8 @@ std::ofstream openHistory(const std::string& path, const std::string& header, co
 RunoutLog::RunoutLog(const std::string& caseDir, const std::string& method, bool append, double startTime)
 :
     path_((fs::path(methodOutputDir(caseDir, method))/"runout.dat").string()),
-    os_(openHistory(path_, runoutHeader, append, startTime))
+    os_(openHistory(path_, runoutHeader, append, startTime)),
+    kept_(append ? readRunoutLog(path_) : std::vector<RunoutSample>())
 {}
 
 void RunoutLog::write(const RunoutSample& s)

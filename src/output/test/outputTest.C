@@ -174,6 +174,10 @@ TEST(OutputContract, RunoutLogRoundTripAndRestart)
     // A restart from t = 1 keeps the rows up to 1 and continues.
     {
         RunoutLog log(c.string(), "slideDAM", true, 1.0);
+        // What a restart finds: the run's start (slideFoam's volume reference) and its own start row.
+        ASSERT_EQ(log.kept().size(), 3u);
+        EXPECT_DOUBLE_EQ(log.kept().front().mass, 579.42);
+        EXPECT_DOUBLE_EQ(log.kept().back().time, 1.0);
         RunoutSample s;
         s.time = 1.5;
         s.front = 9.0;

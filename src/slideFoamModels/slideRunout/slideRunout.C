@@ -118,11 +118,16 @@ Foam::functionObjects::slideRunout::slideRunout
             FatalErrorInFunction << "bad set-up record: " << e.what() << nl << exit(FatalError);
         }
     }
+    const scalar t0 = runTime.startTime().value();
     if (Pstream::master())
     {
-        const scalar t0 = runTime.startTime().value();
         log_.reset(new slide::output::RunoutLog(runTime.globalPath(), "slideFoam", t0 > 0, t0));
+        const std::vector<slide::output::RunoutSample>& kept = log_->kept();
+        // A restart measures the volume change from the run's start, not its own.
+        if (!kept.empty() && kept.front().mass > 0) initialVolume_ = kept.front().mass/scene_.slide.density;
+        startRowKept_ = !kept.empty() && mag(kept.back().time - t0) <= 1e-9*max(mag(t0), scalar(1));
     }
+    Pstream::scatter(initialVolume_);
 }
 
 
@@ -298,7 +303,8 @@ bool Foam::functionObjects::slideRunout::execute()
 
     if (time_.writeTime() || time_.timeIndex() == time_.startTimeIndex())
     {
-        if (log_) log_->write(state_.sample);
+        // A restart's start row is already in runout.dat, as slideMPM and slideDAM leave it.
+        if (log_ && !(startRowKept_ && time_.timeIndex() == time_.startTimeIndex())) log_->write(state_.sample);
 
         // Rest: every slide cell slower than restVelocity at two successive writes.
         // A layer smeared thinner than its cells may hold no cell of alpha >= 0.5

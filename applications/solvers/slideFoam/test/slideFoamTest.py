@@ -18,6 +18,10 @@ generated from SlideFoam scenes by slideFoamCase:
               (exactly, where xi does not feed back) and the factor follows the
               cell thickness on a graded mesh
   parallel    the flume on 2 MPI ranks (decomposePar) matches the serial run
+  restart     the flume stopped at 1 s and restarted (startFrom latestTime) to 2 s:
+              runout.dat keeps the first leg's rows as written and holds each time
+              once, the front matches the uninterrupted run's, and summary.json's
+              volume change is counted from the run's start
   polyline    the flume's slope given as a polyline (vertical columns, gravity
               down: faces not aligned with the axes) runs as the planar scene in
               the slope's frame; over a kink onto a gentler slope it runs shorter;
@@ -45,7 +49,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import make_case, prepare, run, run_slidefoam, read_field, time_dirs  # noqa: E402
+from cfdcase import make_case, prepare, run, run_slidefoam, read_field, set_entry, time_dirs  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
 
@@ -365,6 +369,37 @@ def test_parallel(work):
     # The ranks' GAMG agglomerations differ, and p_rgh is solved to relTol 0.01 before its final corrector.
     check(du < 0.005*umax, "U in the slide: max |difference| %.2g m/s, %.2g %% of the largest speed (< 0.5 %%)"
           % (du, 100*du/umax))
+
+
+def test_restart(work):
+    full = flume_case(work, "full", end=2.0, write=0.5)
+    restarted = flume_case(work, "restarted", end=1.0, write=0.5)
+    run_slidefoam(full)
+    run_slidefoam(restarted)
+    first = open(os.path.join(restarted, "postProcessing", "slideFoam", "runout.dat")).read().splitlines()
+    control = os.path.join(restarted, "system", "controlDict")
+    set_entry(control, "endTime", 2.0)
+    set_entry(control, "startFrom", "latestTime")
+    run_slidefoam(restarted)
+    check(re.search(r"^Time = 2$", open(os.path.join(restarted, "log.slideFoam")).read(), re.M) is not None
+          and not re.search(r"^Time = 0\.[0-9]*$", open(os.path.join(restarted, "log.slideFoam")).read(), re.M),
+          "the second run started at 1 s and ended at 2 s")
+    again = open(os.path.join(restarted, "postProcessing", "slideFoam", "runout.dat")).read().splitlines()
+    check(again[:len(first)] == first, "runout.dat keeps the first leg's %d lines as written" % len(first))
+    rf, rr = runout(full), runout(restarted)
+    times = rr["time"]
+    check(bool(np.all(np.diff(times) > 0)) and len(times) == len(rf["time"]),
+          "runout.dat holds each time once: %s (the uninterrupted run: %s)"
+          % (" ".join("%g" % t for t in times), " ".join("%g" % t for t in rf["time"])))
+    sf, sr = summary(full), summary(restarted)
+    d = abs(sf["runout_m"] - sr["runout_m"])
+    # The second leg starts from the fields as written (ASCII, writePrecision digits), not from memory.
+    check(d < 1e-3, "front at 2 s: uninterrupted %.6f m, restarted %.6f m (|difference| %.2g < 1 mm)"
+          % (sf["runout_m"], sr["runout_m"], d))
+    dv = abs(sf["volume_relative_change"] - sr["volume_relative_change"])
+    check(dv < 1e-7 and sr["volume_relative_change"] != 0,
+          "volume change from the run's start: uninterrupted %.3e, restarted %.3e" % (sf["volume_relative_change"],
+                                                                                     sr["volume_relative_change"]))
 
 
 def polyline_case(work, name, points, scene=None, interface=None, end=2.0, control=None, cfd=None):
