@@ -8,7 +8,7 @@ against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
                                  [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
                                  [--max-co 0.25] [--xi-per-cell] [--top slip] [--reach 1600] [--end-time 100]
-                                 [--replot]
+                                 [--replot] [--continue CASE_DIR --end-time 200]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
 import json
@@ -98,15 +98,58 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
                   % (c, cells, travel, key, longer), flush=True)
             return run_case(c, cells, processors, work, dict(mesh, **{key: longer}), scene_end, retries - 1)
         return dict({"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log)}, **mesh)
+    return case_row(c, cells, d, dam["runout_m"], mesh)
+
+
+def case_row(c, cells, d, dam_runout, mesh):
+    """table1.json's row for a run that ended in case directory d (its summary.json and runout.dat)."""
     s = read_summary(os.path.join(d, "postProcessing", "slideFoam", "summary.json"))
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
+    # Restarts before session 35 wrote their start time's row twice.
+    first = [i for i, t in enumerate(r["time"]) if i == 0 or t > r["time"][i - 1]]
     return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
-            "wall": s["wall_time_s"], "n": s["problem_size"], "volume_change": s["volume_relative_change"],
-            "xi_max": s["xi_max"], "dam_runout": dam["runout_m"], **mesh,
+            "wall": s["wall_time_s"], "n": s["problem_size"],
+            # From runout.dat's slide mass, so that it spans every leg of a restarted run.
+            "volume_change": float(r["mass"][-1]/r["mass"][0] - 1),
+            "xi_max": s["xi_max"], "dam_runout": dam_runout, **mesh,
             "top_cells_slide_share_max": s.get("top_cells_slide_share_max"),
-            "alpha_max": s["alpha_max"],
+            "alpha_max": s["alpha_max"], "slide_share_above_half": s.get("slide_share_above_half"),
             "front_velocity": float(r["frontVelocity"][-1]), "max_velocity": float(r["maxVelocity"][-1]),
-            "history": [[float(t), float(f)] for t, f in zip(r["time"], r["front"])]}
+            "history": [[float(r["time"][i]), float(r["front"][i])] for i in first]}
+
+
+def row_key(r):
+    return r["case"], r["cells"], bool(r.get("xi_per_cell"))
+
+
+def continue_case(d, end_time, processors, rows):
+    """Runs a kept case of an earlier table1.py run (its work directory, decomposed on `processors` ranks) on from
+    its latest time to end_time (cfdDict endTime, startFrom latestTime), or collects a leg already run so by hand,
+    and returns its table1.json row with the legs (start, end, wall time) it took."""
+    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?$", os.path.basename(os.path.normpath(d)))
+    if not m:
+        raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
+    key = int(m.group(1)), int(m.group(2)), bool(m.group(3))
+    old = [r for r in rows if row_key(r) == key and "failed" not in r]
+    if not old:
+        raise SystemExit("--continue: table1.json has no run of Case %d at H0/%d to continue" % key[:2])
+    old = old[0]
+    legs = old.get("legs") or [[0.0, old["end_time"], old["wall"]]]
+    summary = os.path.join(d, "postProcessing", "slideFoam", "summary.json")
+    s = read_summary(summary) if os.path.exists(summary) else {}
+    if not s.get("end_time_s", 0) > legs[-1][1]:
+        set_method_entries(d, "cfdDict", {"endTime": "%g" % end_time})
+        set_entry(os.path.join(d, "system", "controlDict"), "startFrom", "latestTime")
+        log = "log.slideFoam.from%g" % legs[-1][1]
+        run(d, "mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(processors), which("slideFoam"),
+            "-parallel", log=log)
+        run(d, "reconstructPar", "-latestTime")
+        s = read_summary(summary)
+    legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"]]]
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top"] + [e[0] for e in CFD_ENTRIES]}
+    row = case_row(key[0], key[1], d, old["dam_runout"], mesh)
+    row.update(wall=sum(leg[2] for leg in legs), legs=legs)
+    return row
 
 
 def main():
@@ -131,13 +174,22 @@ def main():
                     "a fast thin head throws into the light ambient (Case 4) in the domain")
     ap.add_argument("--replot", action="store_true", help="rewrite table1.md and table1.png from table1.json, "
                     "running nothing")
+    ap.add_argument("--continue", dest="cont", metavar="CASE_DIR",
+                    help="run a kept case of an earlier run (its work directory, e.g. /tmp/slideFoam_table1_*/"
+                    "case04_H0_20) on from its latest time to --end-time, and replace its row (legs and wall times "
+                    "summed); a leg already run by hand to there is collected")
     args = ap.parse_args()
     cells = [int(v) for v in args.cells.split(",")]
-    cases = [] if args.replot else [int(v) for v in args.cases.split(",")]
-    args.keep = args.keep or args.replot
+    cases = [] if args.replot or args.cont else [int(v) for v in args.cases.split(",")]
+    args.keep = args.keep or args.replot or bool(args.cont)
     paper = paper_table()
     work = tempfile.mkdtemp(prefix="slideFoam_table1_")
     results = []
+    if args.cont:
+        if args.end_time is None:
+            raise SystemExit("--continue needs --end-time")
+        results.append(continue_case(args.cont, args.end_time, args.processors,
+                                     json.load(open(os.path.join(here, "table1.json")))))
     for c in cases:
         for n in cells:
             mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES}, refinement=args.base_refinement,
@@ -147,11 +199,9 @@ def main():
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
     if args.keep and os.path.exists(os.path.join(here, "table1.json")):
         # Earlier runs of other case/mesh pairs stay in the table.
-        def key(r):
-            return r["case"], r["cells"], bool(r.get("xi_per_cell"))
-        done = {key(r) for r in results}
-        results = [r for r in json.load(open(os.path.join(here, "table1.json"))) if key(r) not in done] + results
-        results.sort(key=key)
+        done = {row_key(r) for r in results}
+        results = [r for r in json.load(open(os.path.join(here, "table1.json"))) if row_key(r) not in done] + results
+        results.sort(key=row_key)
     json.dump(results, open(os.path.join(here, "table1.json"), "w"), indent=1)
 
     lines = ["# slideFoam: the CFD column of Table 1", "",
@@ -176,6 +226,8 @@ def main():
             mesh += ", maxCo %g" % r["max_co"]
         if r.get("top") == "slip":
             mesh += ", lid on top"
+        if len(r.get("legs", [])) > 1:
+            mesh += ", restarted at %s s" % ", ".join("%g" % leg[0] for leg in r["legs"][1:])
         mesh += counting(r)
         if "failed" in r:
             lines.append("| %d | %s | | %s | failed: %s | | | | | | | |"
