@@ -107,11 +107,13 @@ def case_row(c, cells, d, dam_runout, mesh):
     r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
     # Restarts before session 35 wrote their start time's row twice.
     first = [i for i, t in enumerate(r["time"]) if i == 0 or t > r["time"][i - 1]]
-    return {"case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"], "end_time": s["end_time_s"],
+    # The mesh's options first: the run's own end time replaces the cfdDict endTime asked for (--end-time).
+    return {**mesh, "case": c, "cells": cells, "runout": s["runout_m"], "at_rest": s["at_rest"],
+            "end_time": s["end_time_s"],
             "wall": s["wall_time_s"], "n": s["problem_size"],
             # From runout.dat's slide mass, so that it spans every leg of a restarted run.
             "volume_change": float(r["mass"][-1]/r["mass"][0] - 1),
-            "xi_max": s["xi_max"], "dam_runout": dam_runout, **mesh,
+            "xi_max": s["xi_max"], "dam_runout": dam_runout,
             "top_cells_slide_share_max": s.get("top_cells_slide_share_max"),
             "alpha_max": s["alpha_max"], "slide_share_above_half": s.get("slide_share_above_half"),
             "front_velocity": float(r["frontVelocity"][-1]), "max_velocity": float(r["maxVelocity"][-1]),
@@ -137,7 +139,13 @@ def continue_case(d, end_time, processors, rows):
     legs = old.get("legs") or [[0.0, old["end_time"], old["wall"]]]
     summary = os.path.join(d, "postProcessing", "slideFoam", "summary.json")
     s = read_summary(summary) if os.path.exists(summary) else {}
-    if not s.get("end_time_s", 0) > legs[-1][1]:
+    if s.get("end_time_s", 0) > legs[-1][1]:
+        print("Case %d H0/%d: collecting the leg from %g to %g s run by hand" % (key[0], key[1], legs[-1][1],
+                                                                                 s["end_time_s"]), flush=True)
+    elif end_time <= legs[-1][1]:
+        raise SystemExit("--continue: Case %d H0/%d already ran to %g s; give a later --end-time"
+                         % (key[0], key[1], legs[-1][1]))
+    else:
         set_method_entries(d, "cfdDict", {"endTime": "%g" % end_time})
         set_entry(os.path.join(d, "system", "controlDict"), "startFrom", "latestTime")
         log = "log.slideFoam.from%g" % legs[-1][1]
