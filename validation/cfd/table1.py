@@ -157,6 +157,9 @@ def continue_case(d, end_time, processors, rows):
     mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top"] + [e[0] for e in CFD_ENTRIES]}
     row = case_row(key[0], key[1], d, old["dam_runout"], mesh)
     row.update(wall=sum(leg[2] for leg in legs), legs=legs)
+    # summary.json's largest share of the slide in the top cells is its own leg's.
+    shares = [r.get("top_cells_slide_share_max") for r in (old, row) if r.get("top_cells_slide_share_max") is not None]
+    row["top_cells_slide_share_max"] = max(shares) if shares else None
     return row
 
 
