@@ -22,6 +22,10 @@ generated from SlideFoam scenes by slideFoamCase:
               runout.dat keeps the first leg's rows as written and holds each time
               once, the front matches the uninterrupted run's, and summary.json's
               volume change is counted from the run's start
+  extend      Table 1 Case 2 (H0/5) on a mesh reaching 20 m ahead, carried on at 2 s
+              by bin/tools/extendSlideMesh to one reaching 80 m: the copy is exact
+              (slide volume, momentum, alpha xi V), runout.dat holds each time once,
+              and at 6 s the front is the run's on the long mesh from the start
   polyline    the flume's slope given as a polyline (vertical columns, gravity
               down: faces not aligned with the axes) runs as the planar scene in
               the slope's frame; over a kink onto a gentler slope it runs shorter;
@@ -400,6 +404,47 @@ def test_restart(work):
     check(dv < 1e-7 and sr["volume_relative_change"] != 0,
           "volume change from the run's start: uninterrupted %.3e, restarted %.3e" % (sf["volume_relative_change"],
                                                                                      sr["volume_relative_change"]))
+
+
+def test_extend(work):
+    template = os.path.join(top, "tutorials", "table1", "case02")
+    cfd = {"cellsPerHeight": 5, "baseRefinement": 2, "behind": 80}
+    control = {"endTime": 6, "writeInterval": 1}
+    long = make_case(template, work, "long", control=control, cfd=dict(cfd, reach=80))
+    short = make_case(template, work, "short", control=dict(control, endTime=2), cfd=dict(cfd, reach=20))
+    for c in (long, short):
+        prepare(c)
+        run_slidefoam(c)
+    extended = os.path.join(work, "extended")
+    if os.path.exists(extended):
+        shutil.rmtree(extended)
+    tool = os.path.join(top, "bin", "tools", "extendSlideMesh")
+    out = run(work, tool, short, extended, "--reach", "80", "--end-time", "6", log="log.extendSlideMesh")
+    log = open(os.path.join(work, "log.extendSlideMesh")).read()
+    check(out == 0 and "goes on from 2 s" in log, "extendSlideMesh carried the 2 s fields over: "
+          + " ".join(line for line in log.splitlines() if "cells ->" in line))
+    run_slidefoam(extended)
+    rl, re_ = runout(long), runout(extended)
+    times = re_["time"]
+    check(bool(np.all(np.diff(times) > 0)) and list(times) == list(rl["time"]),
+          "runout.dat over both meshes holds each time once: %s" % " ".join("%g" % t for t in times))
+    front_short = runout(short)["front"][-1]
+    sl, se = summary(long), summary(extended)
+    d = abs(sl["runout_m"] - se["runout_m"])
+    # The meshes differ only beyond the short one's end, where the light ambient leaves through its open end.
+    check(d < 0.005*(sl["runout_m"] - front_short), "front at 6 s: %.4f m on the long mesh, %.4f m carried over "
+          "from the short one at 2 s (%.4f m there; |difference| %.2g m < 0.5 %% of the travel since)"
+          % (sl["runout_m"], se["runout_m"], front_short, d))
+    # The short mesh lost 5e-6 of the slide through its open end by 2 s; the long one did not.
+    whole = re_["mass"][-1]/re_["mass"][0] - 1
+    check(abs(se["volume_relative_change"] - whole) < 1e-9 and abs(whole) < 0.005,
+          "volume change from the run's start: %.3e in summary.json, %.3e from runout.dat's first and last rows "
+          "(on the long mesh: %.3e)" % (se["volume_relative_change"], whole, sl["volume_relative_change"]))
+    bad = make_case(template, work, "notSlideFoam")
+    rc = run(work, tool, bad, os.path.join(work, "badTarget"), "--reach", "80", log="log.extendBad", check=False)
+    check(rc != 0 and "no slideFoam fields" in open(os.path.join(work, "log.extendBad")).read()
+          and not os.path.exists(os.path.join(work, "badTarget")),
+          "a case without slideFoam fields is refused, nothing written")
 
 
 def polyline_case(work, name, points, scene=None, interface=None, end=2.0, control=None, cfd=None):
