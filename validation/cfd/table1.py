@@ -127,7 +127,8 @@ def row_key(r):
 def continue_case(d, end_time, processors, rows):
     """Runs a kept case of an earlier table1.py run (its work directory, decomposed on `processors` ranks) on from
     its latest time to end_time (cfdDict endTime, startFrom latestTime), or collects a leg already run so by hand,
-    and returns its table1.json row with the legs (start, end, wall time) it took."""
+    and returns its table1.json row with the legs (start, end, wall time, cells) it took. d may be the case
+    carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from)."""
     m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?$", os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
@@ -153,8 +154,15 @@ def continue_case(d, end_time, processors, rows):
             "-parallel", log=log)
         run(d, "reconstructPar", "-latestTime")
         s = read_summary(summary)
-    legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"]]]
+    legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
+    legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
     mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top"] + [e[0] for e in CFD_ENTRIES]}
+    # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
+    cfd_dict = open(os.path.join(d, "system", "cfdDict")).read()
+    for k, entry, _ in CFD_ENTRIES:
+        found = re.search(r"^\s*%s\s+([^;\s]+)\s*;" % entry, cfd_dict, re.M)
+        if k != "end_time" and found:
+            mesh[k] = float(found.group(1))
     row = case_row(key[0], key[1], d, old["dam_runout"], mesh)
     row.update(wall=sum(leg[2] for leg in legs), legs=legs)
     # summary.json's largest share of the slide in the top cells is its own leg's.
@@ -237,8 +245,11 @@ def main():
             mesh += ", maxCo %g" % r["max_co"]
         if r.get("top") == "slip":
             mesh += ", lid on top"
-        if len(r.get("legs", [])) > 1:
-            mesh += ", restarted at %s s" % ", ".join("%g" % leg[0] for leg in r["legs"][1:])
+        legs = r.get("legs", [])
+        if len(legs) > 1:
+            mesh += ", restarted at %s s" % ", ".join(
+                "%g" % b[0] + (" on a longer mesh of %d cells" % b[3] if len(b) > 3 and len(a) > 3 and b[3] != a[3]
+                               else "") for a, b in zip(legs, legs[1:]))
         mesh += counting(r)
         if "failed" in r:
             lines.append("| %d | %s | | %s | failed: %s | | | | | | | |"
