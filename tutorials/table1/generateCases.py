@@ -153,8 +153,10 @@ def readme(case, row, paper):
                      "0.1 % of the slide has left through the mesh's top, on every mesh tried up to H0/20. With "
                      "`top slip;` in `system/cfdDict` (a lid) it runs on, but the layer thins towards its yield "
                      "thickness, 0.14 m: on 0.25 m base cells it runs on unresolved (2410 m, still 10.6 m/s at 193 s), "
-                     "and with H0/20 and 0.125 m base cells the front stopped at 1331 m at 119 s with a second surge "
-                     "running down the deposit behind it at 125 s (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
+                     "and with H0/20 and 0.125 m base cells the front stalls twice (1331 m at 119-170 s, 1682 m at "
+                     "233-250 s) over a deposit at rest at about its yield thickness, and surges of the last thick slide "
+                     "carry it on: 1845 m at 280 s, still at 3.1 m/s, on a mesh carried on to 2400 m by "
+                     "`bin/tools/extendSlideMesh` (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
         lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
                      "about 4 times Case 4's cells, hours on a few cores, and it has not been run "

@@ -149,6 +149,8 @@ def continue_case(d, end_time, processors, rows):
     else:
         set_method_entries(d, "cfdDict", {"endTime": "%g" % end_time})
         set_entry(os.path.join(d, "system", "controlDict"), "startFrom", "latestTime")
+        # slideDAM's end time, which table1.py gave the run, would stop it first.
+        set_entry(os.path.join(d, "system", "controlDict"), "endTime", "%g" % end_time)
         log = "log.slideFoam.from%g" % legs[-1][1]
         run(d, "mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(processors), which("slideFoam"),
             "-parallel", log=log)
@@ -247,9 +249,9 @@ def main():
             mesh += ", lid on top"
         legs = r.get("legs", [])
         if len(legs) > 1:
-            mesh += ", restarted at %s s" % ", ".join(
-                "%g" % b[0] + (" on a longer mesh of %d cells" % b[3] if len(b) > 3 and len(a) > 3 and b[3] != a[3]
-                               else "") for a, b in zip(legs, legs[1:]))
+            mesh += ", restarted at %s" % ", ".join(
+                "%g s" % b[0] + (" on a longer mesh of %d cells" % b[3] if len(b) > 3 and len(a) > 3 and b[3] != a[3]
+                                 else "") for a, b in zip(legs, legs[1:]))
         mesh += counting(r)
         if "failed" in r:
             lines.append("| %d | %s | | %s | failed: %s | | | | | | | |"
