@@ -21,7 +21,7 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
+from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
 from paper import paper_table  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import read_summary, read_runout, unresolved  # noqa: E402
@@ -160,11 +160,10 @@ def continue_case(d, end_time, processors, rows):
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
     mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top"] + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
-    cfd_dict = open(os.path.join(d, "system", "cfdDict")).read()
     for k, entry, _ in CFD_ENTRIES:
-        found = re.search(r"^\s*%s\s+([^;\s]+)\s*;" % entry, cfd_dict, re.M)
-        if k != "end_time" and found:
-            mesh[k] = float(found.group(1))
+        value = get_entry(os.path.join(d, "system", "cfdDict"), entry)
+        if k != "end_time" and value is not None:
+            mesh[k] = value
     row = case_row(key[0], key[1], d, old["dam_runout"], mesh)
     row.update(wall=sum(leg[2] for leg in legs), legs=legs)
     # summary.json's largest share of the slide in the top cells is its own leg's.

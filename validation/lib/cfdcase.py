@@ -27,6 +27,12 @@ def set_entry(path, key, value, add=False):
     open(path, "w").write(new)
 
 
+def get_entry(path, key):
+    """A top-level number `key value;` of an OpenFOAM-style dictionary, or None where it has none."""
+    m = re.search(r"^\s*%s\s+([^;\s]+)\s*;" % re.escape(key), open(path).read(), re.M)
+    return float(m.group(1)) if m else None
+
+
 def set_method_entries(case, method_dict, entries):
     """Sets or adds top-level entries of a method dictionary (system/damDict, mpmDict): what the tutorial's
     dictionary says beyond them (a scene's shearBandThickness, ...) is kept."""
