@@ -148,173 +148,27 @@ output::PolyData particleData(const HostPoints& hp, const BaseFrame& frame,
     return pd;
 }
 
-namespace
+output::Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const double H0, const double g,
+                                  const double cellSize, const rheology::HerschelBulkleyRemoulding& material)
 {
-
-double median(std::vector<double> v)
-{
-    if (v.empty()) return 0.0;
-    std::nth_element(v.begin(), v.begin() + v.size()/2, v.end());
-    return v[v.size()/2];
-}
-
-} // namespace
-
-Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, const double H0, const double g,
-                          const double cellSize, const rheology::HerschelBulkleyRemoulding& material)
-{
-    Mechanism m;
-    if (hp.count == 0)
-    {
-        m.name = "none";
-        return m;
-    }
-    // Columns along the base (a cell, or H0/5 if wider, so that a particle
-    // missing from a column's top is not read as a graben): occupancy, top
-    // surface, basal layer.
-    const double width = std::max(cellSize, 0.2*H0);
-    const double x0 = hp.rearX();
-    const int nCol = static_cast<int>(std::ceil((hp.frontX() - x0)/width)) + 1;
-    std::vector<double> top(nCol, -1.0), bottom(nCol, 1e300);
+    std::vector<output::MaterialSample> samples(hp.count);
     for (int p = 0; p < hp.count; ++p)
     {
-        const int c = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
-        const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
-        top[c] = std::max(top[c], h + hp.halfExtent(p, 1));
-        bottom[c] = std::min(bottom[c], h - hp.halfExtent(p, 1));
+        output::MaterialSample& q = samples[p];
+        q.s = hp.position(p, 0);
+        q.halfLength = hp.halfExtent(p, 0);
+        q.h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
+        q.halfHeight = hp.halfExtent(p, 1);
+        q.mass = hp.mass(p);
+        q.velocity = hp.velocity(p, 0);
+        q.xi = hp.xi(p);
     }
-    // Bodies: runs of occupied columns separated by at least two empty ones (2 H0/5).
-    // On a base that holds what touches it (no-slip), a body sliding away on its
-    // remoulded basal band leaves the band behind as a film, so the columns
-    // between never empty: a remoulded film (below H0/20, half its strength lost)
-    // over two columns or more also parts a run, where the parts on both sides
-    // reach H0/5 (slabs, not the film's own ripples or a thin tongue).
-    std::vector<std::vector<double>> columnXi(nCol);
-    if (material.deltaRem < 1.0)
-    {
-        for (int p = 0; p < hp.count; ++p)
-        {
-            const int c = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
-            columnXi[c].push_back(hp.xi(p));
-        }
-    }
-    auto remouldedFilm = [&](int c)
-    {
-        return material.deltaRem < 1.0 && top[c] >= 0.0 && top[c] < remouldedFilmHeight*H0
-            && (material.remouldingFactor(median(columnXi[c])) - material.deltaRem)/(1.0 - material.deltaRem) <= 0.5;
-    };
-    m.bodies = 0;
-    int empty = 2, gap = 2, slabs = 0;
-    bool slab = false;                 // the part since the last gap reaches H0/5
-    auto endPart = [&]() { if (slab) ++slabs; slab = false; };
-    for (int c = 0; c < nCol; ++c)
-    {
-        if (top[c] < 0.0 || remouldedFilm(c))
-        {
-            empty = top[c] < 0.0 ? empty + 1 : 0;
-            if (++gap == 2) endPart();
-            continue;
-        }
-        if (empty >= 2)
-        {
-            // A run parted from the last by empty columns: its slabs, or itself.
-            m.bodies += std::max(slabs, 1)*(c > 0 ? 1 : 0);
-            slabs = 0;
-        }
-        slab = slab || top[c] >= 0.2*H0;
-        empty = 0;
-        gap = 0;
-    }
-    endPart();
-    m.bodies += std::max(slabs, 1);
-    // Grabens: surface depressions deeper than H0/5 below the crests on both sides
-    // (crests = running maxima within 2 H0), found on the column tops.
-    const int reach = std::max(2, static_cast<int>(std::ceil(2.0*H0/width)));
-    int c = 0;
-    while (c < nCol)
-    {
-        if (top[c] < 0.0) { ++c; continue; }
-        double left = 0.0, right = 0.0;
-        for (int k = std::max(0, c - reach); k < c; ++k) left = std::max(left, top[k]);
-        for (int k = c + 1; k <= std::min(nCol - 1, c + reach); ++k) right = std::max(right, top[k]);
-        bool localMin = true;
-        for (int k = std::max(0, c - 1); k <= std::min(nCol - 1, c + 1); ++k)
-        {
-            if (top[k] >= 0.0 && top[k] < top[c]) localMin = false;
-        }
-        if (localMin && std::min(left, right) - top[c] > 0.2*H0)
-        {
-            ++m.grabens;
-            c += reach;   // one graben per trough
-            continue;
-        }
-        ++c;
-    }
-    // Basal layer: the particles within two spacings of the lowest particle in their column.
-    double M = 0.0, P = 0.0, Mb = 0.0, Pb = 0.0;
-    std::vector<double> xiBase, xiBody;
-    std::vector<std::vector<double>> bodyXi(nCol);   // per column, above its lowest two spacings (horsts below)
-    for (int p = 0; p < hp.count; ++p)
-    {
-        const int col = std::min(nCol - 1, std::max(0, static_cast<int>((hp.position(p, 0) - x0)/width)));
-        const double h = hp.position(p, 1) - frame.level.height(hp.position(p, 0));
-        if (h - bottom[col] >= 2.0*hp.spacing) bodyXi[col].push_back(hp.xi(p));
-        const double u = hp.velocity(p, 0);
-        M += hp.mass(p);
-        P += hp.mass(p)*u;
-        if (h - bottom[col] < 2.0*hp.spacing && bottom[col] < 2.0*hp.spacing)
-        {
-            Mb += hp.mass(p);
-            Pb += hp.mass(p)*u;
-            xiBase.push_back(hp.xi(p));
-        }
-        else
-        {
-            xiBody.push_back(hp.xi(p));
-        }
-    }
-    // Horsts: in a remoulding material, blocks whose body (above the basal layer)
-    // has kept nine tenths of its strength, at least H0/5 high and two columns
-    // long, each parted from the next by columns whose body has lost half of it
-    // (the shear bands and grabens between the paper's horsts), or none left.
-    if (material.deltaRem < 1.0)
-    {
-        const double loss = 1.0 - material.deltaRem;
-        int run = 0;              // intact columns in the current block
-        bool parted = true;       // remoulded columns since the last block
-        for (int col = 0; col <= nCol; ++col)
-        {
-            const bool occupied = col < nCol && top[col] >= 0.0;
-            const double kept = occupied && !bodyXi[col].empty()
-                ? (material.remouldingFactor(median(bodyXi[col])) - material.deltaRem)/loss : 0.0;
-            if (occupied && kept >= 0.9 && top[col] >= 0.2*H0)
-            {
-                ++run;
-                continue;
-            }
-            if (run >= 2 && parted)
-            {
-                ++m.horsts;
-                parted = false;
-            }
-            run = 0;
-            if (occupied && kept <= 0.5) parted = true;
-        }
-        if (m.horsts < 2) m.horsts = 0;
-    }
-    const double V = P/M;
-    m.basalSlipRatio = (Mb > 0.0 && V != 0.0) ? (Pb/Mb)/V : 0.0;
-    const double xb = median(xiBase), xr = median(xiBody);
-    m.basalStrainRatio = xr > 0.0 ? xb/xr : (xb > 0.0 ? 1e9 : 1.0);
-    m.shearBand = (xb > 0.5 && m.basalStrainRatio > 3.0) ? "along the base"
-                : (m.grabens > 0 || m.horsts > 0 ? "in the body" : "none");
-
-    const std::vector<std::string>& names = output::mechanismNames();
-    if (m.bodies > 1) m.name = names[3];
-    else if (m.grabens >= 2 || m.horsts >= 2) m.name = names[2];
-    else if (std::fabs(V) > 0.1*std::sqrt(g*H0) && m.basalSlipRatio > 0.8) m.name = names[1];
-    else m.name = names[0];
-    return m;
+    output::MechanismView view;
+    view.H0 = H0;
+    view.g = g;
+    view.columnWidth = std::max(cellSize, 0.2*H0);
+    view.basalLayer = 2.0*hp.spacing;
+    return output::detectMechanism(samples, view, material);
 }
 
 EnergyState energyState(const HostPoints& hp, const BaseFrame& frame, const UndrainedClay& clay, const double cellSize)

@@ -285,7 +285,7 @@ int main(int argc, char** argv)
         if (!atRest) atRest = stats.maxSpeed < rc.restVelocity && slowingDown;
 
         const mpm::HostPoints hp(points);
-        const mpm::Mechanism mech = mpm::detectMechanism(hp, frame, H0, sc.g, d, sc.rheology);
+        const output::Mechanism mech = mpm::detectMechanism(hp, frame, H0, sc.g, d, sc.rheology);
         const double mass = hp.totalMass();
         output::Summary summary;
         summary.method = "slideMPM";
@@ -327,7 +327,7 @@ int main(int argc, char** argv)
         summary.addString("final_state_mechanism", mech.name);
         summary.addString("shear_band", mech.shearBand);
         summary.addNumber("bodies", mech.bodies);
-        summary.addNumber("breakaway_film_height_m", mpm::remouldedFilmHeight*H0);
+        summary.addNumber("breakaway_film_height_m", output::remouldedFilmHeight*H0);
         summary.addNumber("grabens", mech.grabens);
         summary.addNumber("horsts", mech.horsts);
         summary.addNumber("basal_slip_ratio", mech.basalSlipRatio);

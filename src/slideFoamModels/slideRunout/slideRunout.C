@@ -36,15 +36,18 @@ void Foam::functionObjects::slideRunout::buildColumns()
     const fvPatch& base = mesh_.boundary()[patchi];
 
     // Every rank gets every base face (x, area), so that all agree on the columns.
-    List<scalarField> allX(Pstream::nProcs()), allA(Pstream::nProcs());
+    List<scalarField> allX(Pstream::nProcs()), allA(Pstream::nProcs()), allY(Pstream::nProcs());
     allX[Pstream::myProcNo()] = base.Cf().component(vector::X);
     allA[Pstream::myProcNo()] = base.magSf();
+    allY[Pstream::myProcNo()] = base.Cf().component(vector::Y);
     Pstream::gatherList(allX);
     Pstream::scatterList(allX);
     Pstream::gatherList(allA);
     Pstream::scatterList(allA);
+    Pstream::gatherList(allY);
+    Pstream::scatterList(allY);
 
-    DynamicList<scalar> x, a;
+    DynamicList<scalar> x, a, y;
     DynamicList<label> owner, local;
     forAll(allX, proci)
     {
@@ -52,6 +55,7 @@ void Foam::functionObjects::slideRunout::buildColumns()
         {
             x.append(allX[proci][i]);
             a.append(allA[proci][i]);
+            y.append(allY[proci][i]);
             owner.append(proci);
             local.append(i);
         }
@@ -64,6 +68,7 @@ void Foam::functionObjects::slideRunout::buildColumns()
     scalarList colX(nCol);
     columnS_.setSize(nCol);
     columnArea_.setSize(nCol);
+    columnBaseY_.setSize(nCol);
     faceColumn_.setSize(base.size());
     forAll(order, c)
     {
@@ -71,6 +76,7 @@ void Foam::functionObjects::slideRunout::buildColumns()
         colX[c] = x[k];
         columnS_[c] = arcLength(x[k]);
         columnArea_[c] = a[k];
+        columnBaseY_[c] = y[k];
         if (owner[k] == Pstream::myProcNo()) faceColumn_[local[k]] = c;
     }
 
@@ -87,6 +93,113 @@ void Foam::functionObjects::slideRunout::buildColumns()
 
     depth_ = mesh_.bounds().span().z();
     if (depth_ <= 0) depth_ = 1;
+
+    // What the mechanism classifier needs of the mesh: each cell's width along x,
+    // columns of the widest base face or H0/5, and the basal layer: the row of
+    // cells on the base. Two rows, as slideMPM takes two particle spacings, were
+    // most of a thin layer on a mesh not refined to the base (the flume at H0/10,
+    // a layer three to six cells thick: a basal slip ratio of 0.8-0.9 where the
+    // particles give 0.35), and read a sheared flow as block sliding.
+    cellWidth_.setSize(mesh_.nCells());
+    const pointField& pts = mesh_.points();
+    forAll(cellWidth_, celli)
+    {
+        scalar lo = GREAT, hi = -GREAT;
+        for (const label pointi : mesh_.cellPoints()[celli])
+        {
+            lo = min(lo, pts[pointi].x());
+            hi = max(hi, pts[pointi].x());
+        }
+        cellWidth_[celli] = max(hi - lo, SMALL);
+    }
+    scalar baseCellHeight = 0;
+    forAll(base.faceCells(), facei)
+    {
+        const label celli = base.faceCells()[facei];
+        baseCellHeight = max(baseCellHeight, mesh_.V()[celli]/depth_/cellWidth_[celli]);
+    }
+    reduce(baseCellHeight, maxOp<scalar>());
+    scalar widest = 0;
+    forAll(columnArea_, c) widest = max(widest, columnArea_[c]/depth_);
+    mechanismView_.H0 = scene_.slide.height;
+    mechanismView_.g = scene_.g;
+    mechanismView_.columnWidth = max(widest, 0.2*scene_.slide.height);
+    mechanismView_.basalLayer = baseCellHeight;
+}
+
+
+Foam::vector Foam::functionObjects::slideRunout::tangent(const label column) const
+{
+    if (scene_.base.isPlanar()) return vector(1, 0, 0);
+    const slide::scene::Point2 tp = scene_.base.tangent(columnS_[column]);
+    return vector(tp.x, tp.z, 0);
+}
+
+
+slide::output::Mechanism Foam::functionObjects::slideRunout::detectMechanism() const
+{
+    const volScalarField& alpha = lookupObject<volScalarField>(alphaName_);
+    const volVectorField& U = lookupObject<volVectorField>("U");
+    const volScalarField* xi = findObject<volScalarField>("xi");
+    const scalarField& V = mesh_.V();
+    const vectorField& C = mesh_.C();
+    // Each rank's cells of alpha >= 0.5, eight values a cell, gathered on the master.
+    const label nPack = 8;
+    DynamicList<scalar> local;
+    forAll(alpha, celli)
+    {
+        if (alpha[celli] < 0.5) continue;
+        const label c = cellColumn_[celli];
+        const scalar area = V[celli]/depth_;
+        local.append(arcLength(C[celli].x()));
+        local.append(0.5*cellWidth_[celli]);
+        local.append(C[celli].y() - columnBaseY_[c]);
+        local.append(0.5*area/cellWidth_[celli]);
+        local.append(scene_.slide.density*alpha[celli]*area);
+        local.append(U[celli] & tangent(c));
+        local.append(xi ? (*xi)[celli] : scalar(0));
+        local.append(alpha[celli]*area);   // a cell votes by its slide volume: the mesh is graded to the base
+    }
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = local;
+    Pstream::gatherList(all);
+    slide::output::Mechanism m;
+    if (!Pstream::master()) return m;
+    std::vector<slide::output::MaterialSample> samples;
+    forAll(all, proci)
+    {
+        const scalarList& l = all[proci];
+        for (label k = 0; k + nPack <= l.size(); k += nPack)
+        {
+            slide::output::MaterialSample q;
+            q.s = l[k];
+            q.halfLength = l[k + 1];
+            q.h = l[k + 2];
+            q.halfHeight = l[k + 3];
+            q.mass = l[k + 4];
+            q.velocity = l[k + 5];
+            q.xi = l[k + 6];
+            q.vote = l[k + 7];
+            samples.push_back(q);
+        }
+    }
+    return slide::output::detectMechanism(samples, mechanismView_, scene_.rheology);
+}
+
+
+void Foam::functionObjects::slideRunout::recordMechanism()
+{
+    const slide::output::Mechanism m = detectMechanism();
+    if (!Pstream::master() || m.name == "none") return;
+    // A restart's start row is kept in mechanism.dat, as in runout.dat.
+    if (time_.timeIndex() == time_.startTimeIndex() && !mechanisms_.empty()
+        && mag(mechanisms_.back().first - time_.value()) <= 1e-9*max(mag(time_.value()), scalar(1)))
+    {
+        return;
+    }
+    if (!mechanisms_.empty() && mechanisms_.back().first >= time_.value()) return;   // a time recorded twice
+    mechanismLog_->write(time_.value(), m);
+    mechanisms_.emplace_back(time_.value(), m.name);
 }
 
 
@@ -126,6 +239,8 @@ Foam::functionObjects::slideRunout::slideRunout
         // A restart measures the volume change from the run's start, not its own.
         if (!kept.empty() && kept.front().mass > 0) initialVolume_ = kept.front().mass/scene_.slide.density;
         startRowKept_ = !kept.empty() && mag(kept.back().time - t0) <= 1e-9*max(mag(t0), scalar(1));
+        mechanismLog_.reset(new slide::output::MechanismLog(runTime.globalPath(), "slideFoam", t0 > 0, t0));
+        mechanisms_ = mechanismLog_->kept();
     }
     Pstream::scatter(initialVolume_);
 }
@@ -165,11 +280,7 @@ bool Foam::functionObjects::slideRunout::execute()
         const scalar a = alpha[celli];
         const scalar av = a*V[celli];
         const label c = cellColumn_[celli];
-        const vector t = scene_.base.isPlanar() ? vector(1, 0, 0) : [&]()
-        {
-            const slide::scene::Point2 tp = scene_.base.tangent(columnS_[c]);
-            return vector(tp.x, tp.z, 0);
-        }();
+        const vector t = tangent(c);
         colAV[c] += av;
         colAVU[c] += av*(U[celli] & t);
         s.volume += av;
@@ -305,6 +416,7 @@ bool Foam::functionObjects::slideRunout::execute()
     {
         // A restart's start row is already in runout.dat, as slideMPM and slideDAM leave it.
         if (log_ && !(startRowKept_ && time_.timeIndex() == time_.startTimeIndex())) log_->write(state_.sample);
+        recordMechanism();
 
         // Rest: every slide cell slower than restVelocity at two successive writes.
         // A layer smeared thinner than its cells may hold no cell of alpha >= 0.5
@@ -330,9 +442,10 @@ bool Foam::functionObjects::slideRunout::execute()
 }
 
 
-void Foam::functionObjects::slideRunout::record() const
+void Foam::functionObjects::slideRunout::record()
 {
     if (log_) log_->write(state_.sample);
+    recordMechanism();
 }
 
 
@@ -353,6 +466,7 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
     }
     reduce(coherent, sumOp<scalar>());
     reduce(total, sumOp<scalar>());
+    const slide::output::Mechanism mech = detectMechanism();
     if (!Pstream::master()) return;
 
     slide::output::Summary sum;
@@ -376,6 +490,15 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
     sum.addBool("reached_domain_end", state_.atDomainEnd);
     sum.addNumber("top_cells_slide_share_max", topShareMax_);
     sum.addNumber("slide_share_above_half", total > 0 ? coherent/total : 0);
+    // As slideMPM reads it off its particles (src/output/runoutMechanism.H).
+    sum.addString("mechanism", slide::output::runMechanism(mechanisms_, mech.name, atRest));
+    sum.addString("final_state_mechanism", mech.name);
+    sum.addString("shear_band", mech.shearBand);
+    sum.addNumber("bodies", mech.bodies);
+    sum.addNumber("grabens", mech.grabens);
+    sum.addNumber("horsts", mech.horsts);
+    sum.addNumber("basal_slip_ratio", mech.basalSlipRatio);
+    sum.extra.emplace_back("mechanism_history", slide::output::mechanismHistoryJson(mechanisms_));
     if (!setting_.empty())
     {
         sum.addString("setting", setting_);

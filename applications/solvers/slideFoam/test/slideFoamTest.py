@@ -71,6 +71,13 @@ def summary(case):
     return read_summary(os.path.join(case, "postProcessing", "slideFoam", "summary.json"))
 
 
+def mechanisms(case):
+    """postProcessing/slideFoam/mechanism.dat as [(time, mechanism name)]."""
+    names = ["viscous elongation", "block sliding", "spreading (horsts and grabens)", "breakaway"]
+    rows = np.atleast_2d(np.loadtxt(os.path.join(case, "postProcessing", "slideFoam", "mechanism.dat")))
+    return [(float(row[0]), names[int(row[-1])]) for row in rows]
+
+
 def runout(case):
     return read_runout(os.path.join(case, "postProcessing", "slideFoam", "runout.dat"))
 
@@ -147,6 +154,15 @@ def test_flume(work):
     check(float(np.max(xi[alpha < 1e-3])) == 0.0 if np.any(alpha < 1e-3) else True, "no xi in the ambient phase")
     check(abs(r["rear"][-1] + 1.8) < 1e-9, "rear stays at the end wall (%.4f m)" % r["rear"][-1])
     check(bool(np.all(np.diff(r["front"]) >= -1e-3)), "front never retreats")
+    # The slurry flows off its end wall sheared from the base: viscous elongation. While the column
+    # collapses (0.1-0.5 s) its fast front is most of what moves, and the row of cells on the base moves
+    # about as fast as the mean: block sliding there.
+    history = mechanisms(c)
+    later = [m for t, m in history if t >= 1.0]
+    check(len(history) == len(r["time"]) and later and all(m == "viscous elongation" for m in later)
+          and s.get("mechanism") == "viscous elongation" and s["basal_slip_ratio"] < 0.8,
+          "mechanism: viscous elongation at the %d writes from 1 s of %d (mechanism.dat), %s in summary.json "
+          "(basal slip ratio %.2f)" % (len(later), len(history), s.get("mechanism"), s["basal_slip_ratio"]))
 
     # The tutorial's lower top ahead of the gate: fewer cells, the same flow.
     low = make_case(FLUME, work, "flumeLowTop", control={"endTime": 4.1, "writeInterval": 0.1},
@@ -278,6 +294,10 @@ def test_base(work):
     travel_block = centre_of_mass_travel(block, t)
     check(abs(travel_block/exact - 1) < 0.05, "strong block on a frictionless base: centre of mass moved %.3f m, "
           "g sin(theta) t^2/2 = %.3f m (within 5 %%)" % (travel_block, exact))
+    check(summary(block)["mechanism"] == "block sliding" and summary(no_slip)["mechanism"] == "viscous elongation",
+          "mechanism: the strong block on a frictionless base %s (basal slip ratio %.2f), the slurry on a no-slip base "
+          "%s (%.2f)" % (summary(block)["mechanism"], summary(block)["basal_slip_ratio"],
+                         summary(no_slip)["mechanism"], summary(no_slip)["basal_slip_ratio"]))
 
     # A mesh too short either way: the slide leaving through an open end stops the run
     # with the cfdDict key to change, and no summary (the runout would be cut short).
@@ -404,6 +424,10 @@ def test_restart(work):
     # flume's change differs by 2e-8.
     whole = rr["mass"][-1]/rr["mass"][0] - 1
     dv = abs(sf["volume_relative_change"] - sr["volume_relative_change"])
+    mf, mr = mechanisms(full), mechanisms(restarted)
+    check([t for t, _ in mr] == [t for t, _ in mf] and sr["mechanism_history"] == sf["mechanism_history"],
+          "mechanism.dat and summary.json's mechanism history hold each time once, as the uninterrupted run's: %s"
+          % " ".join("%g" % t for t, _ in mr))
     check(abs(sr["volume_relative_change"] - whole) < 1e-9 and dv < 1e-7,
           "volume change from the run's start: restarted %.4e (runout.dat's first and last rows: %.4e; from 1 s: "
           "%.4e), uninterrupted %.4e" % (sr["volume_relative_change"], whole,

@@ -591,12 +591,12 @@ TEST(SlideMPM, HorstsAreIntactBlocksPartedByRemouldedMaterial)
         Kokkos::deep_copy(r.points.plasticShearStrain, xi);
         return mpm::detectMechanism(mpm::HostPoints(r.points), r.frame, H0, sc.g, d, sc.rheology);
     };
-    const mpm::Mechanism parted = withXi(true);
+    const output::Mechanism parted = withXi(true);
     EXPECT_EQ(parted.horsts, 3);
     EXPECT_EQ(parted.grabens, 0);   // the surface is flat: only xi tells
     EXPECT_EQ(parted.name, "spreading (horsts and grabens)");
     EXPECT_EQ(parted.shearBand, "in the body");
-    const mpm::Mechanism basal = withXi(false);
+    const output::Mechanism basal = withXi(false);
     EXPECT_EQ(basal.horsts, 0);
     EXPECT_EQ(basal.name, "viscous elongation");
     scene::Scene intact = sc;
@@ -637,7 +637,7 @@ TEST(SlideMPM, RemouldedFilmOnTheBasePartsBodies)
         return mpm::detectMechanism(mpm::HostPoints(r.points), r.frame, H0, sc.g, d, material);
     };
     film(15.0, 25.0, 100.0);
-    const mpm::Mechanism parted = detect(sc.rheology);
+    const output::Mechanism parted = detect(sc.rheology);
     EXPECT_EQ(parted.bodies, 2);
     EXPECT_EQ(parted.name, "breakaway");
     scene::Scene intact = sc;
