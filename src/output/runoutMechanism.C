@@ -210,6 +210,20 @@ Mechanism detectMechanism(const std::vector<MaterialSample>& samples, const Mech
     return m;
 }
 
+void addMechanism(Summary& summary, const MechanismHistory& history, const Mechanism& finalState, const bool atRest,
+                  const double H0)
+{
+    summary.addString("mechanism", runMechanism(history, finalState.name, atRest));
+    summary.addString("final_state_mechanism", finalState.name);
+    summary.addString("shear_band", finalState.shearBand);
+    summary.addNumber("bodies", finalState.bodies);
+    summary.addNumber("breakaway_film_height_m", remouldedFilmHeight*H0);
+    summary.addNumber("grabens", finalState.grabens);
+    summary.addNumber("horsts", finalState.horsts);
+    summary.addNumber("basal_slip_ratio", finalState.basalSlipRatio);
+    summary.extra.emplace_back("mechanism_history", mechanismHistoryJson(history));
+}
+
 MechanismLog::MechanismLog(const std::string& caseDir, const std::string& method, const bool append,
                            const double startTime)
 :

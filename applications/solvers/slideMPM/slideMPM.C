@@ -322,20 +322,12 @@ int main(int argc, char** argv)
             summary.addNumber("boundary_dissipation_fraction", b.boundary*share);
             summary.addNumber("numerical_dissipation_fraction", b.numerical*share);
         }
-        const std::string runMechanism = output::runMechanism(mechanisms, mech.name, atRest);
-        summary.addString("mechanism", runMechanism);
-        summary.addString("final_state_mechanism", mech.name);
-        summary.addString("shear_band", mech.shearBand);
-        summary.addNumber("bodies", mech.bodies);
-        summary.addNumber("breakaway_film_height_m", output::remouldedFilmHeight*H0);
-        summary.addNumber("grabens", mech.grabens);
-        summary.addNumber("horsts", mech.horsts);
-        summary.addNumber("basal_slip_ratio", mech.basalSlipRatio);
-        summary.extra.emplace_back("mechanism_history", output::mechanismHistoryJson(mechanisms));
+        output::addMechanism(summary, mechanisms, mech, atRest, H0);
         summary.write(caseDir);
 
         std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
-                  << (atRest ? "at rest" : "still moving") << "), mechanism: " << runMechanism << "\n"
+                  << (atRest ? "at rest" : "still moving") << "), mechanism: "
+                  << output::runMechanism(mechanisms, mech.name, atRest) << "\n"
                   << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
                   << summary.wallTime << " s, " << particleUpdates/summary.wallTime
                   << " particle-updates/s on " << backend << "\nEnd\n" << std::endl;

@@ -36,6 +36,21 @@ rheology::HerschelBulkleyRemoulding clay(bool remoulds = true)
     return m;
 }
 
+// A cell dx wide and `height` high, full of slide, centred at (s, h).
+MaterialSample cell(double s, double h, double height, double velocity, double xi)
+{
+    MaterialSample c;
+    c.s = s;
+    c.halfLength = 0.5*dx;
+    c.h = h;
+    c.halfHeight = 0.5*height;
+    c.mass = rho*dx*height;
+    c.velocity = velocity;
+    c.xi = xi;
+    c.vote = dx*height;
+    return c;
+}
+
 // Cells dx by dy from s0 to s1, from the base up to height(s); velocity and xi
 // as functions of (s, h).
 void addMaterial(std::vector<MaterialSample>& out, double s0, double s1, const std::function<double(double)>& height,
@@ -44,19 +59,7 @@ void addMaterial(std::vector<MaterialSample>& out, double s0, double s1, const s
 {
     for (double s = s0 + 0.5*dx; s < s1; s += dx)
     {
-        for (double h = 0.5*dy; h < height(s); h += dy)
-        {
-            MaterialSample c;
-            c.s = s;
-            c.halfLength = 0.5*dx;
-            c.h = h;
-            c.halfHeight = 0.5*dy;
-            c.mass = rho*dx*dy;
-            c.velocity = velocity(s, h);
-            c.xi = xi(s, h);
-            c.vote = dx*dy;
-            out.push_back(c);
-        }
+        for (double h = 0.5*dy; h < height(s); h += dy) out.push_back(cell(s, h, dy, velocity(s, h), xi(s, h)));
     }
 }
 
@@ -170,19 +173,7 @@ TEST(RunoutMechanism, CellsVoteByVolume)
     for (double x = 0.5*dx; x < 40.0; x += dx)
     {
         const bool band = (x >= 12.0 && x < 15.0) || (x >= 26.0 && x < 29.0);
-        auto add = [&](double h, double height, double xi)
-        {
-            MaterialSample c;
-            c.s = x;
-            c.halfLength = 0.5*dx;
-            c.h = h;
-            c.halfHeight = 0.5*height;
-            c.mass = rho*dx*height;
-            c.velocity = 1.0;
-            c.xi = xi;
-            c.vote = dx*height;
-            s.push_back(c);
-        };
+        auto add = [&](double h, double height, double xi) { s.push_back(cell(x, h, height, 1.0, xi)); };
         // 0.25 m basal layer in 0.0625 m cells, then 0.4 m of 0.02 m cells (remoulded
         // where the blocks are not), then 4 m of 0.5 m cells (remoulded in the bands).
         for (double h = 0.03125; h < 0.25; h += 0.0625) add(h, 0.0625, 100.0);

@@ -491,14 +491,7 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
     sum.addNumber("top_cells_slide_share_max", topShareMax_);
     sum.addNumber("slide_share_above_half", total > 0 ? coherent/total : 0);
     // As slideMPM reads it off its particles (src/output/runoutMechanism.H).
-    sum.addString("mechanism", slide::output::runMechanism(mechanisms_, mech.name, atRest));
-    sum.addString("final_state_mechanism", mech.name);
-    sum.addString("shear_band", mech.shearBand);
-    sum.addNumber("bodies", mech.bodies);
-    sum.addNumber("grabens", mech.grabens);
-    sum.addNumber("horsts", mech.horsts);
-    sum.addNumber("basal_slip_ratio", mech.basalSlipRatio);
-    sum.extra.emplace_back("mechanism_history", slide::output::mechanismHistoryJson(mechanisms_));
+    slide::output::addMechanism(sum, mechanisms_, mech, atRest, scene_.slide.height);
     if (!setting_.empty())
     {
         sum.addString("setting", setting_);
