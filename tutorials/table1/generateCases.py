@@ -155,7 +155,7 @@ def readme(case, row, paper):
                      "thickness, 0.14 m: on 0.25 m base cells it runs on unresolved (2410 m, still 10.6 m/s at 193 s), "
                      "and with H0/20 and 0.125 m base cells the front stalls twice (1331 m at 119-170 s, 1682 m at "
                      "233-250 s) over a deposit at rest at about its yield thickness, and surges of the last thick slide "
-                     "carry it on: 1845 m at 280 s, still at 3.1 m/s, on a mesh carried on to 2400 m by "
+                     "carry it on: 1873 m at 286 s, still at 3.9 m/s, on a mesh carried on to 2400 m by "
                      "`bin/tools/extendSlideMesh` (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
         lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
