@@ -197,13 +197,10 @@ void Foam::functionObjects::slideRunout::recordMechanism()
 {
     const slide::output::Mechanism m = detectMechanism();
     if (!Pstream::master() || m.name == "none") return;
-    // A restart's start row is kept in mechanism.dat, as in runout.dat.
-    if (time_.timeIndex() == time_.startTimeIndex() && !mechanisms_.empty()
-        && mag(mechanisms_.back().first - time_.value()) <= 1e-9*max(mag(time_.value()), scalar(1)))
-    {
-        return;
-    }
-    if (!mechanisms_.empty() && mechanisms_.back().first >= time_.value()) return;   // a time recorded twice
+    // A time already recorded: a restart's start row kept in mechanism.dat (as in
+    // runout.dat), or a stop's state written at a write time.
+    const scalar t = time_.value();
+    if (!mechanisms_.empty() && mechanisms_.back().first >= t - 1e-9*max(mag(t), scalar(1))) return;
     mechanismLog_->write(time_.value(), m);
     mechanisms_.emplace_back(time_.value(), m.name);
 }
