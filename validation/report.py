@@ -57,6 +57,8 @@ def table1_results():
                                  "history": r.get("history"), "setup": setup}
         if r["case"] in MPM_FINE:
             out[r["case"]]["MPM"]["note"] = ", " + setup.replace(",", "")
+        if "endTimeCut" in r:
+            out[r["case"]]["MPM"]["note"] = ", stopped before the scene's end"
     # Per case: a resolved run first (no slide thinner than its cells at the end, alpha max >= 0.9), then H0/10 with
     # H0/40 on the base, then the finest mesh (Case 4's H0/20 beside its unresolved H0/10), marked so.
     def preference(r):
