@@ -120,7 +120,9 @@ def case_row(c, cells, d, dam_runout, mesh):
             # Read off the cells since session 36 (src/output/runoutMechanism.H); absent from older runs.
             "mechanism": s.get("mechanism"), "mechanism_history": s.get("mechanism_history"),
             "shear_band": s.get("shear_band"),
-            "history": [[float(r["time"][i]), float(r["front"][i])] for i in first]}
+            # time, front, front velocity (runout.dat's, the alpha-weighted speed of the front's column; rows
+            # before session 37 hold time and front alone).
+            "history": [[float(r["time"][i]), float(r["front"][i]), float(r["frontVelocity"][i])] for i in first]}
 
 
 def row_key(r):
