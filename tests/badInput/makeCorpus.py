@@ -292,6 +292,8 @@ add("cfd-ahead-from-negative", "the lower top starting behind the initial front 
 add("mpm-purge-state-negative", "a negative number of restart states to keep", "system/mpmDict",
     [("purgeState       -2;" if s.startswith("purgeState") else s) for s in mpm0], line_of(mpm0, r"^purgeState"),
     "purgeState", "slideMPM")
+add("cfd-ambient-relaxation-negative", "a negative relaxation time for the light ambient", "system/cfdDict",
+    cfd0[:-1] + ["ambientRelaxationTime -2;", ""], len(cfd0), "ambientRelaxationTime", "slideFoamCase")
 add("cfd-top-unknown", "a top slideFoamCase does not know (lid; it takes open or slip)", "system/cfdDict",
     cfd0[:-1] + ["top             lid;", ""], len(cfd0), "top", "slideFoamCase")
 

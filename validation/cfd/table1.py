@@ -48,6 +48,9 @@ CFD_ENTRIES = [
      "spreading, rerun with more where the rear leaves the mesh)"),
     ("reach", "reach", "mesh ahead of the initial front [m] (cfdDict reach; default: from slideDAM's runout): with "
      "--end-time, a mesh as long as the slide gets by then"),
+    ("ambient_relaxation", "ambientRelaxationTime", "the light ambient relaxes to rest on this time scale [s] "
+     "(cfdDict ambientRelaxationTime, the ambientDamping fvOption; default: undamped): with a lid (Case 4), whose "
+     "ambient keeps circulating after the slide stops"),
     ("end_time", "endTime", "slideFoam stops here [s] (cfdDict endTime): part of a run the CFD cannot follow to the "
      "end here"),
 ]
@@ -129,11 +132,13 @@ def row_key(r):
     return r["case"], r["cells"], bool(r.get("xi_per_cell"))
 
 
-def continue_case(d, end_time, processors, rows):
+def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     """Runs a kept case of an earlier table1.py run (its work directory, decomposed on `processors` ranks) on from
     its latest time to end_time (cfdDict endTime, startFrom latestTime), or collects a leg already run so by hand,
     and returns its table1.json row with the legs (start, end, wall time, cells) it took. d may be the case
-    carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from)."""
+    carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from). ambient_relaxation:
+    the light ambient relaxes to rest on this time scale [s] from the leg's start on (cfdDict ambientRelaxationTime
+    and the constant/fvOptions slideFoamCase writes for it)."""
     m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?$", os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
@@ -152,6 +157,24 @@ def continue_case(d, end_time, processors, rows):
         raise SystemExit("--continue: Case %d H0/%d already ran to %g s; give a later --end-time"
                          % (key[0], key[1], legs[-1][1]))
     else:
+        # A leg stopped by hand after its last collected time: the run goes on from its latest write, and the
+        # stopped leg (its log's last wall time) is counted.
+        times = [float(t) for t in os.listdir(os.path.join(d, "processor0")) if re.match(r"^[0-9.eE+-]+$", t)]
+        latest = max(times) if times else legs[-1][1]
+        stopped_log = os.path.join(d, "log.slideFoam.from%g" % legs[-1][1])
+        if latest > legs[-1][1] + 1e-9 and os.path.exists(stopped_log):
+            walls = re.findall(r"^ExecutionTime = ([0-9.eE+-]+) s", open(stopped_log).read(), re.M)
+            os.replace(stopped_log, stopped_log + ".stopped%g" % latest)
+            legs = legs + [[legs[-1][1], latest, float(walls[-1]) if walls else 0.0, old["n"]]]
+        if ambient_relaxation:
+            set_method_entries(d, "cfdDict", {"ambientRelaxationTime": "%g" % ambient_relaxation})
+            with open(os.path.join(d, "constant", "fvOptions"), "w") as f:
+                f.write("FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n"
+                        "    object fvOptions;\n}\n// Written by table1.py --continue, as slideFoamCase writes it "
+                        "for cfdDict ambientRelaxationTime\nambientDamping\n{\n    type ambientDamping;\n"
+                        "    relaxationTime %g;\n}\n" % ambient_relaxation)
+            if not old.get("ambient_relaxation"):
+                old = dict(old, ambient_relaxation_from=latest)
         set_method_entries(d, "cfdDict", {"endTime": "%g" % end_time})
         set_entry(os.path.join(d, "system", "controlDict"), "startFrom", "latestTime")
         # slideDAM's end time, which table1.py gave the run, would stop it first.
@@ -163,7 +186,8 @@ def continue_case(d, end_time, processors, rows):
         s = read_summary(summary)
     legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
-    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top"] + [e[0] for e in CFD_ENTRIES]}
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top", "ambient_relaxation_from"]
+            + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
     for k, entry, _ in CFD_ENTRIES:
         value = get_entry(os.path.join(d, "system", "cfdDict"), entry)
@@ -214,7 +238,7 @@ def main():
         if args.end_time is None:
             raise SystemExit("--continue needs --end-time")
         results.append(continue_case(args.cont, args.end_time, args.processors,
-                                     json.load(open(os.path.join(here, "table1.json")))))
+                                     json.load(open(os.path.join(here, "table1.json"))), args.ambient_relaxation))
     for c in cases:
         for n in cells:
             mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES}, refinement=args.base_refinement,
@@ -256,6 +280,10 @@ def main():
             mesh += ", maxCo %g" % r["max_co"]
         if r.get("top") == "slip":
             mesh += ", lid on top"
+        if r.get("ambient_relaxation"):
+            mesh += ", ambient relaxed to rest in %g s" % r["ambient_relaxation"]
+            if r.get("ambient_relaxation_from"):
+                mesh += " from %g s" % r["ambient_relaxation_from"]
         legs = r.get("legs", [])
         if len(legs) > 1:
             mesh += ", restarted at %s" % ", ".join(

@@ -10,7 +10,7 @@ namespace cfd
 CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
-                      "aheadHeightRatio", "aheadHeightFrom", "top", "baseRefinement", "baseGrowth", "regularisation",
+                      "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
                       "pressureCoupling", "conservePlugMomentum", "shearBandThickness",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
@@ -48,6 +48,11 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
                                                "where the lower top starts, ahead of the initial front [m]");
     }
     if (d.found("top")) c.top = d.getWordOneOf("top", {"open", "slip"});
+    if (d.found("ambientRelaxationTime"))
+    {
+        c.ambientRelaxationTime = d.getScalarInRange("ambientRelaxationTime", 0.0, 1e9, false, true,
+                                                     "the light ambient's relaxation time [s]");
+    }
     if (d.found("baseRefinement"))
     {
         c.baseRefinement = d.getLabel("baseRefinement");
@@ -106,6 +111,7 @@ std::string CfdControls::describe() const
         os << " ahead of the slide on)";
     }
     if (top != "open") os << ", " << top << " top";
+    if (ambientRelaxationTime > 0.0) os << ", ambient relaxed to rest in " << ambientRelaxationTime << " s";
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -148,6 +149,11 @@ int main(int argc, char** argv)
                          + num(sc.control.startTime) + " s and not after the scene's end time " + num(sc.control.endTime)
                          + " s (system/controlDict)");
         }
+        if (c.ambientRelaxationTime > 0.0 && sc.ambient.phase == scene::Ambient::Phase::water)
+        {
+            cfdDict.fail("ambientRelaxationTime", "damps a light ambient only; this scene's ambient is water, "
+                         "whose drag and added mass act on the slide (constant/sceneProperties ambient)");
+        }
         const double H0 = sc.slide.height;
         const PatchGroups patches = patchGroups(sc, c);
         const bool lid = c.top == "slip";
@@ -269,6 +275,22 @@ int main(int argc, char** argv)
             writeFile(caseDir + "/constant/transportProperties", os.str());
             writeFile(caseDir + "/constant/turbulenceProperties",
                       header("dictionary", "turbulenceProperties", "constant") + "simulationType  laminar;\n");
+            // cfdDict ambientRelaxationTime: the light ambient relaxes to rest (ambientDamping).
+            const std::string fvOptionsFile = caseDir + "/constant/fvOptions";
+            if (c.ambientRelaxationTime > 0.0)
+            {
+                writeFile(fvOptionsFile, header("dictionary", "fvOptions", "constant")
+                          + "// cfdDict ambientRelaxationTime: the source -(1 - alpha) rho_ambient U / relaxationTime\n"
+                            "ambientDamping\n{\n    type            ambientDamping;\n    relaxationTime  "
+                          + num(c.ambientRelaxationTime) + ";\n}\n");
+            }
+            else if (std::ifstream in{fvOptionsFile})
+            {
+                // One this program wrote for an earlier cfdDict would damp a run that no longer asks for it.
+                std::string firstLines(400, '\0');
+                in.read(&firstLines[0], firstLines.size());
+                if (firstLines.find("Written by slideFoamCase") != std::string::npos) std::remove(fvOptionsFile.c_str());
+            }
         }
         // --- fields
         const std::string baseU = sc.interface.type == scene::Interface::Type::noSlip
@@ -430,7 +452,8 @@ PIMPLE
                   + ";\nbaseRefinement  " + std::to_string(c.baseRefinement) + ";\ntop             " + c.top + ";\n");
         writeFile(caseDir + "/" + (sc.caseName.empty() ? std::string("case") : sc.caseName) + ".foam", "");
         std::cout << "Wrote system/{blockMeshDict,fvSchemes,fvSolution,decomposeParDict,cfdSetUp}, "
-                  << "constant/{g,transportProperties,turbulenceProperties}, 0.orig/{U,p_rgh,alpha.slide,xi}\n"
+                  << "constant/{g,transportProperties,turbulenceProperties" << (c.ambientRelaxationTime > 0.0 ? ",fvOptions" : "")
+                  << "}, 0.orig/{U,p_rgh,alpha.slide,xi}\n"
                   << "End" << std::endl;
         return 0;
     });

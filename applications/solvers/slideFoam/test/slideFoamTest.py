@@ -36,6 +36,10 @@ generated from SlideFoam scenes by slideFoamCase:
   hydrostatic the escarpment tutorial's slide made too strong to move, on its polyline
               base (sheared columns over a 20 deg face): slide and light ambient stay
               at rest (the weight and the pressure take the same face gradient)
+  ambientDamping  the ambientDamping fvOption (cfdDict ambientRelaxationTime): a
+              vortex in the light ambient under a lid decays by the implicit Euler
+              factor 1/(1 + dt/tau) per step against the same vortex undamped, and
+              the flume's slurry runs as it does undamped
   reconstruction  slideFoam's flux reconstruction returns a uniform velocity from
               its face fluxes to round-off on a mesh rotated 3.43 deg (fvc::reconstruct
               of Debian's v1912 build does not: fluxReconstruction.H) and on the
@@ -640,6 +644,97 @@ def test_hydrostatic(work):
           "%.2g m/s (< 0.01 m/s)" % ambient)
     check(slide < 1e-3, "a slide at rest on the escarpment's polyline base: its cells' largest speed at 5 s %.2g m/s "
           "(< 1 mm/s)" % slide)
+
+
+def test_ambientDamping(work):
+    # A vortex in the light ambient ahead of Table 1 Case 2's slide made too strong
+    # to move, under a lid: psi = A sin^2(pi xi) sin^2(pi eta) over a box of the
+    # ambient, 1 m/s at most, tangent to the box's edges. Undamped, only the
+    # ambient's viscosity and the schemes take its energy; with tau the source
+    # -(1 - alpha) rho_a U/tau, implicit, multiplies the velocity by 1/(1 + dt/tau)
+    # each step, so the ratio of the two runs' kinetic energies is the square of
+    # the product of those factors over the damped run's steps.
+    tau = 0.5
+    x0, x1, y0, y1 = 42.0, 54.0, 1.0, 14.0
+
+    def vortex_case(name, cfd_extra):
+        cfd = {"setting": "fast", "cellsPerHeight": 8, "processors": 1, "reach": 15, "behind": 2,
+               "heightRatio": 3, "top": "slip"}
+        cfd.update(cfd_extra)
+        c = make_case(os.path.join(top, "tutorials", "table1", "case02"), work, name,
+                      scene={"s_uo": 1e6, "deltaRem": 1},
+                      control={"endTime": 1, "writeInterval": 0.25, "maxDeltaT": 0.01, "stopAtRest": "no"}, cfd=cfd)
+        prepare(c)
+        run(c, "postProcess", "-func", "writeCellCentres", "-time", "0")
+        centres = read_field(c, "0", "C")
+        xi, eta = (centres[:, 0] - x0)/(x1 - x0), (centres[:, 1] - y0)/(y1 - y0)
+        inside = (xi > 0) & (xi < 1) & (eta > 0) & (eta < 1)
+        a = (y1 - y0)/np.pi
+        u = np.where(inside, a*np.sin(np.pi*xi)**2*np.sin(2*np.pi*eta)*np.pi/(y1 - y0), 0.0)
+        v = np.where(inside, -a*np.sin(2*np.pi*xi)*np.pi/(x1 - x0)*np.sin(np.pi*eta)**2, 0.0)
+        path = os.path.join(c, "0", "U")
+        text = open(path).read()
+        field = "internalField   nonuniform List<vector>\n%d\n(\n%s)\n;" % (
+            len(u), "".join("(%.12g %.12g 0)\n" % uv for uv in zip(u, v)))
+        open(path, "w").write(re.sub(r"internalField\s+uniform\s+\([^)]*\)\s*;", lambda m: field, text, count=1))
+        run_slidefoam(c)
+        return c
+
+    def ambient_energy(c, t):
+        alpha = read_field(c, t, "alpha.slide")
+        u = read_field(c, t, "U")
+        return float(0.5*(np.sum(u**2, axis=1)[alpha < 1e-3]).sum())
+
+    def steps(c):
+        return [float(x) for x in re.findall(r"^deltaT = ([0-9.eE+-]+)$", open(os.path.join(c, "log.slideFoam")).read(),
+                                             re.M)]
+
+    free = vortex_case("vortex_free", {})
+    damped = vortex_case("vortex_damped", {"ambientRelaxationTime": tau})
+    check(os.path.exists(os.path.join(damped, "constant", "fvOptions"))
+          and not os.path.exists(os.path.join(free, "constant", "fvOptions")),
+          "slideFoamCase writes constant/fvOptions for cfdDict ambientRelaxationTime only")
+    dt_free, dt_damped = steps(free), steps(damped)
+    check(len(dt_free) == len(dt_damped) and np.allclose(dt_free, dt_damped, rtol=1e-6),
+          "both runs take the same %d steps" % len(dt_damped))
+    times = np.cumsum(dt_damped)
+    e0 = ambient_energy(free, "0.25")
+    for t in ("0.25", "0.5", "0.75", "1"):
+        # The log's deltaT are rounded to 8 digits: a step ends at the write time to within 1e-6 s.
+        factor = np.prod(1.0/(1.0 + np.asarray(dt_damped)[times <= float(t) + 1e-6]/tau))**2
+        ratio = ambient_energy(damped, t)/ambient_energy(free, t)
+        check(abs(ratio/factor - 1) < 0.01, "t = %s s: the damped ambient's kinetic energy %.4g of the undamped one's "
+              "(implicit Euler factor %.4g, exp(-2t/tau) %.4g; within 1 %%)" % (t, ratio, factor,
+                                                                                np.exp(-2*float(t)/tau)))
+    kept = ambient_energy(free, "1")/e0
+    check(kept > 0.8, "undamped, the vortex keeps %.3f of its energy from 0.25 to 1 s (> 0.8: what the damped run "
+          "loses is the source's)" % kept)
+    slide_speed = max(np.linalg.norm(read_field(damped, "1", "U"), axis=1)[read_field(damped, "1", "alpha.slide") >= 0.5])
+    check(slide_speed < 0.01, "the strong slide beside the vortex stays at rest: %.2g m/s (< 0.01 m/s)" % slide_speed)
+
+    # A water ambient is the scene's physics: slideFoamCase refuses to damp it, naming the key, and writes nothing.
+    wet = make_case(FLUME, work, "flume_water_damped", scene={"phase": "water"},
+                    cfd={"cellsPerHeight": 10, "processors": 1, "reach": 5, "ambientRelaxationTime": tau})
+    rc = run(wet, which("slideFoamCase"), "-case", ".", check=False)
+    log = open(os.path.join(wet, "log.slideFoamCase")).read()
+    written = [f for f in ("constant/fvOptions", "system/blockMeshDict", "constant/transportProperties", "0.orig")
+               if os.path.exists(os.path.join(wet, f))]
+    check(rc != 0 and "cfdDict" in log and "ambientRelaxationTime" in log and "water" in log and not written,
+          "ambientRelaxationTime with a water ambient: exit %d, the error names system/cfdDict and the key, files "
+          "written: %s" % (rc, written or "none"))
+
+    # The flume's slurry on its own (light ambient, open top) with the ambient
+    # relaxed on 0.5 s: the slide's cells carry (1 - alpha) rho_a/(alpha rho) of
+    # their inertia per tau, so the front at 1 s is the undamped one's.
+    fronts = []
+    for name, extra in [("flume_free", {}), ("flume_damped", {"ambientRelaxationTime": tau})]:
+        c = make_case(FLUME, work, name, control={"endTime": 1, "writeInterval": 0.5},
+                      cfd=dict({"cellsPerHeight": 10, "processors": 1, "reach": 5}, **extra))
+        prepare(c)
+        run_slidefoam(c)
+        fronts.append(summary(c)["runout_m"])
+    check(abs(fronts[1]/fronts[0] - 1) < 0.005, "flume at 1 s: front %.4f m with the ambient relaxed on %g s, %.4f m "
+          "without (within 0.5 %%)" % (fronts[1], tau, fronts[0]))
 
 
 FOAM_HEADER = "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object %s;\n}\n"

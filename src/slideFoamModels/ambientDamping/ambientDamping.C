@@ -1,0 +1,75 @@
+#include "fvMesh.H"
+#include "ambientDamping.H"
+#include "fvMatrices.H"
+#include "fvmSup.H"
+#include "incompressibleTwoPhaseMixture.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace fv
+{
+    defineTypeNameAndDebug(ambientDamping, 0);
+    addToRunTimeSelectionTable(option, ambientDamping, dictionary);
+}
+}
+
+
+Foam::fv::ambientDamping::ambientDamping
+(
+    const word& name,
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    option(name, modelType, dict, mesh),
+    relaxationTime_(0)
+{
+    fieldNames_ = wordList(1, coeffs_.lookupOrDefault<word>("U", "U"));
+    applied_.setSize(1, false);
+    read(dict);
+}
+
+
+void Foam::fv::ambientDamping::addSup(fvMatrix<vector>&, const label)
+{
+    FatalErrorInFunction
+        << "fvOptions " << name_ << ": ambientDamping weighs the ambient's share of the mixture momentum"
+        << " and needs a solver with a density (slideFoam, interFoam)" << exit(FatalError);
+}
+
+
+void Foam::fv::ambientDamping::addSup
+(
+    const volScalarField&,
+    fvMatrix<vector>& eqn,
+    const label
+)
+{
+    const auto& mixture =
+        mesh_.lookupObject<incompressibleTwoPhaseMixture>("transportProperties");
+
+    // The ambient is phase 2 (phases (slide ambient)); its fraction is clipped
+    // to [0, 1] so that MULES' round-off beyond the bounds adds no source.
+    const volScalarField ambientShare(min(max(mixture.alpha2(), scalar(0)), scalar(1)));
+
+    eqn -= fvm::Sp(ambientShare*mixture.rho2()/dimensionedScalar("relaxationTime", dimTime, relaxationTime_), eqn.psi());
+}
+
+
+bool Foam::fv::ambientDamping::read(const dictionary& dict)
+{
+    if (!option::read(dict))
+    {
+        return false;
+    }
+    relaxationTime_ = coeffs_.get<scalar>("relaxationTime");
+    if (!(relaxationTime_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "fvOptions " << name_ << ": relaxationTime must be > 0 [s], got " << relaxationTime_
+            << exit(FatalIOError);
+    }
+    return true;
+}
