@@ -156,9 +156,11 @@ def readme(case, row, paper):
                      "and with H0/20 and 0.125 m base cells the front stalls twice (1331 m at 119-170 s, 1682 m at "
                      "233-250 s) over a deposit at rest at about its yield thickness, and surges of the last thick slide "
                      "carry it on: 1897.5 m at 330 s, on a mesh carried on to 2400 m by "
-                     "`bin/tools/extendSlideMesh`. There the slide is at rest, but cells near its front move beside the "
-                     "light ambient's circulation under the lid (4.7 m/s mean), so the run's rest test is not met "
-                     "(`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
+                     "`bin/tools/extendSlideMesh`. The slide is at rest there, but the light ambient keeps circulating "
+                     "under the lid (4.7 m/s mean). With `ambientRelaxationTime 2;` in `system/cfdDict` from 336 s "
+                     "the circulation dies out, and from 375 s every slide cell is slower than 5 mm/s with the front "
+                     "at 1887.5 m. The run's rest test still fails on material smeared below alpha 0.5 beyond the "
+                     "front (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
         lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
                      "about 4 times Case 4's cells, hours on a few cores, and it has not been run "
