@@ -163,7 +163,7 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
         latest = max(times) if times else legs[-1][1]
         stopped_log = os.path.join(d, "log.slideFoam.from%g" % legs[-1][1])
         if latest > legs[-1][1] + 1e-9 and os.path.exists(stopped_log):
-            walls = re.findall(r"^ExecutionTime = ([0-9.eE+-]+) s", open(stopped_log).read(), re.M)
+            walls = re.findall(r"^ExecutionTime = .* ClockTime = ([0-9.eE+-]+) s", open(stopped_log).read(), re.M)
             os.replace(stopped_log, stopped_log + ".stopped%g" % latest)
             legs = legs + [[legs[-1][1], latest, float(walls[-1]) if walls else 0.0, old["n"]]]
         if ambient_relaxation:
