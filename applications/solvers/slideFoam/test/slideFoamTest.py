@@ -709,6 +709,16 @@ def test_ambientDamping(work):
     kept = ambient_energy(free, "1")/e0
     check(kept > 0.8, "undamped, the vortex keeps %.3f of its energy from 0.25 to 1 s (> 0.8: what the damped run "
           "loses is the source's)" % kept)
+    # Regenerated without the key, the case loses the fvOptions slideFoamCase wrote; one a user wrote stays.
+    cfd_dict = os.path.join(damped, "system", "cfdDict")
+    text = re.sub(r"(?m)^ambientRelaxationTime.*\n", "", open(cfd_dict).read())
+    open(cfd_dict, "w").write(text)
+    run(damped, which("slideFoamCase"), "-case", ".", log="log.slideFoamCase.undamped")
+    user_options = os.path.join(free, "constant", "fvOptions")
+    open(user_options, "w").write(FOAM_HEADER % "fvOptions" + "// a user's own\n")
+    run(free, which("slideFoamCase"), "-case", ".", log="log.slideFoamCase.again")
+    check(not os.path.exists(os.path.join(damped, "constant", "fvOptions")) and os.path.exists(user_options),
+          "regenerated without ambientRelaxationTime, slideFoamCase removes the fvOptions it wrote and keeps a user's")
     slide_speed = max(np.linalg.norm(read_field(damped, "1", "U"), axis=1)[read_field(damped, "1", "alpha.slide") >= 0.5])
     check(slide_speed < 0.01, "the strong slide beside the vortex stays at rest: %.2g m/s (< 0.01 m/s)" % slide_speed)
 
