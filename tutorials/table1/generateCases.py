@@ -158,8 +158,8 @@ def readme(case, row, paper):
                      "carry it on: 1897.5 m at 330 s, on a mesh carried on to 2400 m by "
                      "`bin/tools/extendSlideMesh`. The slide is at rest there, but the light ambient keeps circulating "
                      "under the lid (4.7 m/s mean). With `ambientRelaxationTime 2;` in `system/cfdDict` from 336 s "
-                     "the circulation dies out; at 375, 379 and 380 s every slide cell is slower than 5 mm/s (0.05-0.09 m/s "
-                     "between), with the front "
+                     "the circulation dies out; at 375, 379 and 380 s every slide cell is slower than 5 mm/s (up to 0.2 m/s "
+                     "between: its half-cell stretches are stirred on and off), with the front "
                      "at 1887.5 m. The run's rest test still fails on material smeared below alpha 0.5 beyond the "
                      "front (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
