@@ -173,11 +173,8 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
                         "    object fvOptions;\n}\n// Written by table1.py --continue, as slideFoamCase writes it "
                         "for cfdDict ambientRelaxationTime\nambientDamping\n{\n    type ambientDamping;\n"
                         "    relaxationTime %g;\n}\n" % ambient_relaxation)
-            if not old.get("ambient_relaxation"):
-                old = dict(old, ambient_relaxation_from=latest)
-            # Each change of tau with the time it started from, for the row's description.
-            steps = old.get("ambient_relaxation_steps") or (
-                [[old["ambient_relaxation_from"], old["ambient_relaxation"]]] if old.get("ambient_relaxation") else [])
+            # Each tau with the time it started from, for the row's description.
+            steps = old.get("ambient_relaxation_steps") or []
             if not steps or steps[-1][1] != ambient_relaxation:
                 steps = steps + [[latest, ambient_relaxation]]
             old = dict(old, ambient_relaxation_steps=steps)
@@ -192,8 +189,7 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
         s = read_summary(summary)
     legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
-    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top", "ambient_relaxation_from",
-                                    "ambient_relaxation_steps"]
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top", "ambient_relaxation_steps"]
             + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
     for k, entry, _ in CFD_ENTRIES:
@@ -290,10 +286,6 @@ def main():
         if r.get("ambient_relaxation_steps"):
             mesh += ", ambient relaxed to rest in " + ", ".join("%g s from %g s" % (tau, t0)
                                                                for t0, tau in r["ambient_relaxation_steps"])
-        elif r.get("ambient_relaxation"):
-            mesh += ", ambient relaxed to rest in %g s" % r["ambient_relaxation"]
-            if r.get("ambient_relaxation_from"):
-                mesh += " from %g s" % r["ambient_relaxation_from"]
         legs = r.get("legs", [])
         if len(legs) > 1:
             mesh += ", restarted at %s" % ", ".join(
