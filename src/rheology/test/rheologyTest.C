@@ -338,13 +338,14 @@ TEST(ShearBandStrainFactor, CellsCoarserThanTheBandCarryItsStrain)
 
 TEST(ReturnStrength, MeetsEq1AtThePlasticRate)
 {
-    // tau - G x = s_u(x/dt, xi) for every branch: shear thinning (Case 10's
-    // n 0.23, n 0.5), Bingham (n 1, the closed form), shear thickening (n 1.5),
-    // rate independent (eta 0); intact and partly remoulded; from a trial stress
-    // a millionth above the threshold (where u^n is steepest) to four times it.
+    // tau - G x = s_u(x/dt, xi) for every branch: shear thinning (Cases 1 and
+    // 10's n 0.15 and 0.23, n 0.5), Bingham (n 1, the closed form), shear
+    // thickening (n 1.5), rate independent (eta 0); intact and partly remoulded;
+    // from a trial stress a billionth above the threshold (where u^n is
+    // steepest) to a hundred times it (Halley started far above the root).
     const double G = 100.0*500.0/2.98;
     for (const double dt : {1e-5, 1e-3})
-    for (const double n : {0.23, 0.5, 1.0, 1.5})
+    for (const double n : {0.15, 0.23, 0.5, 1.0, 1.5})
     for (const double eta : {0.0, 0.45})
     for (const double xi : {0.0, 4.0})
     {
@@ -355,7 +356,7 @@ TEST(ReturnStrength, MeetsEq1AtThePlasticRate)
         double x = -1.0;
         EXPECT_EQ(m.returnStrength(0.9*threshold, G, dt, xi, x), threshold);
         EXPECT_EQ(x, 0.0);
-        for (const double excess : {1e-6, 0.01, 0.5, 3.0})
+        for (const double excess : {1e-9, 1e-6, 0.01, 0.5, 3.0, 100.0})
         {
             const double tau = threshold*(1.0 + excess);
             const double s = m.returnStrength(tau, G, dt, xi, x);
