@@ -172,6 +172,22 @@ def main():
                              "" if r["atRest"] else " (moving, t = %g s)" % r["endTime"], r["mechanism"],
                              r["mech10"], r["mech30"], r["shearBand"], r["wall"],
                              OLD_DETECTOR if r.get("breakawayFilm") is None else ""))
+    # Every stored cell of a case with these particles, coarse to fine: the convergence in the cell, and the
+    # paper's own set-up (H0/60, 4x4) where it was run.
+    conv = []
+    for c in cases:
+        runs = [r for r in results if r["case"] == c and r["ppc"] == args.ppc and "runout" in r]
+        if len(runs) < 2:
+            continue
+        ref = paper[c][1].get("MPM")
+        conv.append("- Case %d: " % c + ", ".join(
+            "H0/%d %.1f m%s%s" % (r["cells"], r["runout"],
+                                  " (%+.0f %%)" % (100.0*(r["runout"]/ref - 1.0)) if ref else "",
+                                  "" if r["atRest"] else " moving at %g s" % r["endTime"])
+            for r in sorted(runs, key=lambda r: r["cells"])))
+    if conv:
+        lines += ["", "Every stored cell with %dx%d particles, coarse to fine (H0/60 is the paper's set-up; error "
+                  "against the paper's MPM):" % (args.ppc, args.ppc), ""] + conv
     with open(os.path.join(here, "table1.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
