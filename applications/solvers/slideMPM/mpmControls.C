@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "purgeState", "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -80,6 +80,10 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.plasticStrainRate = r != "total";
         c.previousStepRate = r == "previousPlastic";
     }
+    if (d.found("stressRate"))
+    {
+        c.kirchhoffStressRate = d.getWordOneOf("stressRate", {"kirchhoff", "cauchy"}) == "kirchhoff";
+    }
     if (d.found("initialStress"))
     {
         c.geostaticStart = d.getWordOneOf("initialStress", {"geostatic", "none"}) == "geostatic";
@@ -114,6 +118,7 @@ UndrainedClay MpmControls::clay(const rheology::HerschelBulkleyRemoulding& stren
     UndrainedClay c = UndrainedClay::fromYoungs(strength, youngsModulusRatio*strength.s_uo, poissonRatio,
                                                 plasticStrainRate);
     c.previousStepRate = previousStepRate;
+    c.kirchhoffRate = kirchhoffStressRate;
     c.bandStrainFactor = rheology::shearBandStrainFactor(shearBandThickness, cellSize);
     return c;
 }
@@ -133,6 +138,7 @@ std::string MpmControls::describe(const double cellSize) const
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
        << ", Eq. (1) at the " << (!plasticStrainRate ? "total" : previousStepRate ? "previous step's plastic"
                                                                                   : "plastic") << " shear strain rate"
+       << ", elasticity in the Jaumann rate of the " << (kirchhoffStressRate ? "Kirchhoff" : "Cauchy") << " stress"
        << (geostaticStart ? "" : ", released stress free")
        << ", Courant " << courant << " (Eq. 6)"
        << (deltaT > 0.0 ? ", overridden by a fixed deltaT " + std::to_string(deltaT) + " s" : std::string())

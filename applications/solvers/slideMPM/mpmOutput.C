@@ -171,7 +171,8 @@ output::Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, 
     return output::detectMechanism(samples, view, material);
 }
 
-EnergyState energyState(const HostPoints& hp, const BaseFrame& frame, const UndrainedClay& clay, const double cellSize)
+EnergyState energyState(const HostPoints& hp, const BaseFrame& frame, const UndrainedClay& clay, const double density,
+                        const double cellSize)
 {
     const double inertia = 0.25*cellSize*cellSize;
     const double G = clay.shearModulus, K = clay.lame + 2.0*clay.shearModulus/3.0;
@@ -187,7 +188,8 @@ EnergyState energyState(const HostPoints& hp, const BaseFrame& frame, const Undr
         const double mean = (sxx + syy + szz)/3.0;
         const double ss = (sxx - mean)*(sxx - mean) + (syy - mean)*(syy - mean) + (szz - mean)*(szz - mean)
                         + 2.0*sxy*sxy;
-        e.elastic += hp.volume(p)*(ss/(4.0*G) + mean*mean/(2.0*K));
+        const double J = clay.kirchhoffRate ? hp.volume(p)*density/m : 1.0;   // as the elasticity counts it
+        e.elastic += J*hp.volume(p)*(ss/(4.0*G) + mean*mean/(2.0*K));
         e.plastic += hp.plasticWork(p);
     }
     return e;

@@ -107,7 +107,7 @@ int main(int argc, char** argv)
         output::MechanismHistory mechanisms;
         const double restartAt = output::restartTime(caseDir, rc, "slideMPM");
         std::unique_ptr<mpm::StepStatistics> restartStats;
-        mpm::EnergyState energyStart = mpm::energyState(initial, frame, clay, d);
+        mpm::EnergyState energyStart = mpm::energyState(initial, frame, clay, sc.slide.density, d);
         double boundaryWork = 0.0;
         if (restartAt > 0.0)
         {
@@ -147,7 +147,7 @@ int main(int argc, char** argv)
             last = mpm::runoutSample(hp, frame, t, initialFront, d);
             if (!logRow) return hp;
             log.write(last);
-            energyLog.write(t, mpm::energyState(hp, frame, clay, d), energyStart, boundaryWork);
+            energyLog.write(t, mpm::energyState(hp, frame, clay, sc.slide.density, d), energyStart, boundaryWork);
             if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
             if (controls.writeState)
             {
@@ -306,6 +306,7 @@ int main(int argc, char** argv)
                         controls.baseBoundary == mpm::MpmControls::BaseBoundary::fitted && controls.baseRowMassScaling);
         summary.addNumber("courant", controls.courant);
         summary.addString("strain_rate", controls.strainRateWord());
+        summary.addString("stress_rate", controls.stressRateWord());
         summary.addString("initial_stress", controls.geostaticStart ? "geostatic" : "none");
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);
@@ -314,8 +315,8 @@ int main(int argc, char** argv)
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
         {
             // The energy budget at the end (energy.dat has its history): where gravity's work went.
-            const mpm::EnergyBudget b = mpm::energyBudget(mpm::energyState(hp, frame, clay, d), energyStart,
-                                                          boundaryWork);
+            const mpm::EnergyBudget b = mpm::energyBudget(mpm::energyState(hp, frame, clay, sc.slide.density, d),
+                                                          energyStart, boundaryWork);
             const double share = b.gravity > 0.0 ? 1.0/b.gravity : 0.0;
             summary.addNumber("gravity_work_J_per_m", b.gravity);
             summary.addNumber("plastic_dissipation_fraction", b.plastic*share);

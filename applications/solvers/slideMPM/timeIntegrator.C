@@ -346,16 +346,6 @@ KOKKOS_INLINE_FUNCTION void cellPressureTerms(const ParticleTensor& sig, const P
     b = V(p);
 }
 
-// exp(x), the stretch of a particle domain over a step (x = L_xx dt): the
-// Taylor series where |x| < 0.01 (relative error below 2e-15; a Courant-limited
-// step stretches by 1e-3 or less), else the library's exp, which cost 3 % of a
-// step.
-KOKKOS_INLINE_FUNCTION double stretchFactor(const double x)
-{
-    if (!(std::fabs(x) < 0.01)) return std::exp(x);
-    return 1.0 + x*(1.0 + x*(0.5 + x*(1.0/6.0 + x*(1.0/24.0 + x*(1.0/120.0)))));
-}
-
 // The rear wall (normal to the frame's x axis) holds material back and lets it
 // go: grid column i's nodes in rows [ja, jb) lose any upslope velocity.
 KOKKOS_INLINE_FUNCTION void holdAtRearWall(const NodeField& vel, const int i, const int ja, const int jb)
@@ -406,6 +396,7 @@ TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay
 :
     frame_(frame), clay_(clay), contact_(contact), controls_(controls),
     splitting_{controls.particleSplitting, controls.maxParticleLength},
+    density_(density),
     waveSpeed_(std::sqrt(clay.constrainedModulus()/density)),
     fittedBase_(controls.baseBoundary == MpmControls::BaseBoundary::fitted),
     rows_(gridRows(frame, controls))
@@ -695,6 +686,8 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     const bool average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
     const bool lagged = clay.plasticRate && clay.previousStepRate;   // the next step reads this step's rate
     const auto avg = grid.averaging;
+    const auto m = mp.mass;
+    const double invDensity = 1.0/density_;
     const double invD = 1.0/grid.d, xOrigin = grid.xOrigin;
     const int i0 = grid.i0, j0 = grid.j0, ni = grid.ni, nj = grid.nj;
     const RowShear rows = grid.rows;
@@ -721,7 +714,9 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
             dil = avg(i, j, 0);   // the cell's mean
         }
         double xip = xi(p), sup, gdot;
-        const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot, record, lagged ? plasticRate(p) : 0.0);
+        // V0/V from the mass: a particle is seeded at the slide's density, and splitting halves m and V together.
+        const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot, record, lagged ? plasticRate(p) : 0.0,
+                                       m(p)*invDensity/V(p));
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         xi(p) = xip;
         if (dXi > 0.0) work(p) += sup*dXi*V(p);   // the return's dissipation, s:dEps_p = s_u dXi
@@ -731,9 +726,9 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
             rate(p) = gdot;
         }
         if (record || lagged) plasticRate(p) = dXi/dt;
-        V(p) *= stretchFactor(dil*dt);
-        len(p, 0) = std::fmin(maxLength, len(p, 0)*stretchFactor(Lp[0]*dt));   // fmin: std::min is host-only under nvcc
-        len(p, 1) = std::fmin(maxLength, len(p, 1)*stretchFactor(Lp[3]*dt));
+        V(p) *= UndrainedClay::stretchFactor(dil*dt);
+        len(p, 0) = std::fmin(maxLength, len(p, 0)*UndrainedClay::stretchFactor(Lp[0]*dt));   // fmin: std::min is host-only under nvcc
+        len(p, 1) = std::fmin(maxLength, len(p, 1)*UndrainedClay::stretchFactor(Lp[3]*dt));
         const double xn = x(p, 0) + dt*v(p, 0);
         double yn = x(p, 1) + dt*v(p, 1);
         // The grid's contact keeps nodes out of the base, but a particle near it

@@ -690,11 +690,15 @@ TEST(SlideMPM, ShearBandThicknessRemouldsTwoMeshesAlike)
 namespace
 {
 
+mpm::EnergyState energyNow(SceneRun& r)
+{
+    return mpm::energyState(mpm::HostPoints(r.points), r.frame, r.clay, r.sc.slide.density, r.grid.d);
+}
+
 // The energy budget of a run from its start: what mpmOutput's EnergyLog writes.
 mpm::EnergyBudget budgetSince(const mpm::EnergyState& start, SceneRun& r, const double boundaryWork)
 {
-    return mpm::energyBudget(mpm::energyState(mpm::HostPoints(r.points), r.frame, r.clay, r.grid.d), start,
-                             boundaryWork);
+    return mpm::energyBudget(energyNow(r), start, boundaryWork);
 }
 
 } // namespace
@@ -710,7 +714,7 @@ TEST(SlideMPM, EnergyBudgetOfASlidingBlockIsItsFriction)
     iface.s_b = 200.0;
     const scene::Scene sc = blockScene(5.0, 8.0, 1.0, 500.0, 1e5, iface);
     SceneRun r(sc, controls(8, 2), 100.0*1e5);
-    const mpm::EnergyState start = mpm::energyState(mpm::HostPoints(r.points), r.frame, r.clay, r.grid.d);
+    const mpm::EnergyState start = energyNow(r);
     double x0, y0, u0;
     centreOfMass(mpm::HostPoints(r.points), x0, y0, u0);
     double boundaryWork = 0.0;
@@ -741,7 +745,7 @@ TEST(SlideMPM, EnergyBudgetShowsWhatPICDissipatesAndAPICKeeps)
         mpm::MpmControls c = controls(8, 2);
         c.transfer = transfer;
         SceneRun r(blockScene(10.0, 4.0, 1.0, 600.0, 300.0, iface), c, 100.0*300.0);
-        const mpm::EnergyState start = mpm::energyState(mpm::HostPoints(r.points), r.frame, r.clay, r.grid.d);
+        const mpm::EnergyState start = energyNow(r);
         double boundaryWork = 0.0;
         mpm::advanceTo(r.integrator, r.points, r.grid, r.t, 1.5, r.stats, &boundaryWork);
         const mpm::EnergyBudget b = budgetSince(start, r, boundaryWork);

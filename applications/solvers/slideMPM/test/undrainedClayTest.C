@@ -1,6 +1,7 @@
 // Single-particle constitutive driver of the MPM's undrained clay against the
 // shared rheology (Eq. 1): rate curve, softening curve, elastic modulus,
-// objectivity under rigid rotation, and the plastic strain bookkeeping.
+// objectivity under rigid rotation, resistance to large compression, and the
+// plastic strain bookkeeping.
 #include "undrainedClay.H"
 
 #include <gtest/gtest.h>
@@ -152,6 +153,53 @@ TEST(UndrainedClay, RigidRotationLeavesTheStressInvariants)
     EXPECT_NEAR(UndrainedClay::shearStress(sig), tau0, 2e-3*tau0);
     EXPECT_NEAR(sig[0] + sig[1], tr0, 1e-9*std::fabs(tr0));
     EXPECT_EQ(rate, 0.0);
+}
+
+TEST(UndrainedClay, CompressionResistanceGrowsWithoutBound)
+{
+    // Kirchhoff's rate: the mean Kirchhoff stress J p is K ln(1/J) at every J,
+    // so the force of a particle on the grid (V0 J p) grows as it is squeezed.
+    // Cauchy's rate gave p = K ln(1/J), a force V0 K J ln(1/J) that peaks at
+    // J = 1/e (a fourteenth of the way here) and falls to nothing after.
+    const UndrainedClay c = UndrainedClay::fromYoungs(material(0.0, 1.0, 1.0, 1.0), 1e5, 0.49);
+    const double K = c.lame + 2.0/3.0*c.shearModulus;
+    const double rate = -1.0, dt = 1e-3;   // isotropic in plane, with a deviator that yields at s_uo
+    const double L[4] = {rate, 0.0, 0.0, rate};
+    double sig[4] = {0.0, 0.0, 0.0, 0.0}, xi = 0.0, su = 0.0, gdot = 0.0, J = 1.0, lastForce = 0.0;
+    for (int k = 0; k < 7000; ++k)   // to J = e^-14
+    {
+        c.update(L, 2.0*rate, dt, sig, xi, su, gdot, true, 0.0, 1.0/J);
+        J *= UndrainedClay::stretchFactor(2.0*rate*dt);
+        const double force = -J*UndrainedClay::third*(sig[0] + sig[1] + sig[2]);
+        ASSERT_GT(force, lastForce) << "step " << k << ", J " << J;
+        ASSERT_NEAR(force, -K*std::log(J), 1e-9*K*std::fabs(std::log(J))) << "step " << k;
+        // s_u bounds the Cauchy stress, to the round-off of a deviator taken from
+        // components of the size of p (1e11 Pa by the end).
+        const double p = -UndrainedClay::third*(sig[0] + sig[1] + sig[2]);
+        ASSERT_LE(UndrainedClay::shearStress(sig), c.strength.s_uo + 1e-15*p) << "step " << k;
+        lastForce = force;
+    }
+    EXPECT_LT(J, 1e-6);
+    EXPECT_GT(xi, 1.0);
+
+    // The same compression under Cauchy's rate: the force peaks at J = 1/e, at
+    // K/e, and is down to 14 e^-14 K by J = e^-14.
+    UndrainedClay cauchy = c;
+    cauchy.kirchhoffRate = false;
+    double s2[4] = {0.0, 0.0, 0.0, 0.0}, peak = 0.0, peakJ = 0.0, force = 0.0;
+    xi = 0.0;
+    J = 1.0;
+    for (int k = 0; k < 7000; ++k)
+    {
+        cauchy.update(L, 2.0*rate, dt, s2, xi, su, gdot, true, 0.0, 1.0/J);
+        J *= UndrainedClay::stretchFactor(2.0*rate*dt);
+        force = -J*UndrainedClay::third*(s2[0] + s2[1] + s2[2]);
+        if (force > peak) { peak = force; peakJ = J; }
+    }
+    EXPECT_NEAR(peakJ, std::exp(-1.0), 2e-3);
+    EXPECT_NEAR(peak, K/std::exp(1.0), 1e-6*K);
+    EXPECT_LT(force, 1e-4*peak);
+    EXPECT_LT(force, 1e-5*lastForce);
 }
 
 TEST(UndrainedClay, StrainRateLeftOutChangesNothingElse)
