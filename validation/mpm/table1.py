@@ -35,6 +35,8 @@ FINE = {11: (40, 2)}
 # before it says so.
 FILM_SENSITIVE = (10, 11, 12, 13)
 OLD_DETECTOR = " (mechanism from the detector before session 25, which parted bodies by empty columns only)"
+# Rows run before session 40 had the clay's elasticity in the Jaumann rate of the Cauchy stress.
+CAUCHY = " (Cauchy stress rate, before session 40)"
 
 
 def run_case(c, cells, ppc, work, scene=None, numerics=None, tag="", end_time=None):
@@ -57,7 +59,8 @@ def run_case(c, cells, ppc, work, scene=None, numerics=None, tag="", end_time=No
                        env=slidefoam_env())
     log = p.stdout.decode(errors="replace")
     if p.returncode != 0:
-        return {"case": c, "cells": cells, "ppc": ppc, "failed": log[-800:]}
+        return {"case": c, "cells": cells, "ppc": ppc, "failed": log[-800:],
+                "stressRate": (numerics or {}).get("stressRate", "kirchhoff")}
     res = case_result(c, cells, ppc, d)
     if end_time is not None:
         res["endTimeCut"] = end_time
@@ -74,6 +77,7 @@ def case_result(c, cells, ppc, d):
             "mech30": mechanism_at(s, 30.0),
             "baseContact": s.get("base_contact", "withinCell"),
             "baseRowMassScaling": s.get("base_row_mass_scaling"),
+            "stressRate": s.get("stress_rate", "cauchy"),
             # Absent: the mechanism came from the detector before session 25, which parted bodies by empty columns
             # only (a no-slip base keeps a remoulded film between bodies that slid apart).
             "breakawayFilm": s.get("breakaway_film_height_m"),
@@ -143,7 +147,8 @@ def main():
                 # The run's own reason: the first line of slideMPM's FATAL ERROR, where it gave one.
                 why = res["failed"].split("FATAL ERROR:")[-1].strip().split("\n")[0] \
                     if "FATAL ERROR:" in res["failed"] else ""
-                row += " failed%s | | | |" % ((": " + why.split(" (")[0]) if why else "")
+                row += " failed%s%s | | | |" % ((": " + why.split(" (")[0]) if why else "",
+                                                CAUCHY if res.get("stressRate", "cauchy") == "cauchy" else "")
                 continue
             ref = vals.get("MPM", vals.get("DAM"))
             err = "%+.0f %%" % (100.0*(res["runout"]/ref - 1.0)) if ref else ""
@@ -158,6 +163,8 @@ def main():
                 extra = "; shear band %s" % res["shearBand"]
             if res.get("breakawayFilm") is None and c in FILM_SENSITIVE:
                 extra += OLD_DETECTOR
+            if res.get("stressRate", "cauchy") == "cauchy":
+                extra += CAUCHY
             row += " %.1f%s | %s | %s%s | %.0f s |" % (res["runout"], state, err, res["mechanism"], extra, res["wall"])
         lines.append(row)
     # The stored runs at FINE's cell or finer (the paper's H0/60 among them) are shown too.
@@ -171,7 +178,8 @@ def main():
                              c, r["cells"], r["ppc"], r["ppc"], r["runout"],
                              "" if r["atRest"] else " (moving, t = %g s)" % r["endTime"], r["mechanism"],
                              r["mech10"], r["mech30"], r["shearBand"], r["wall"],
-                             OLD_DETECTOR if r.get("breakawayFilm") is None else ""))
+                             (OLD_DETECTOR if r.get("breakawayFilm") is None else "")
+                             + (CAUCHY if r.get("stressRate", "cauchy") == "cauchy" else "")))
     # Every stored cell of a case with these particles, coarse to fine: the convergence in the cell, and the
     # paper's own set-up (H0/60, 4x4) where it was run.
     conv = []
@@ -181,9 +189,10 @@ def main():
             continue
         ref = paper[c][1].get("MPM")
         conv.append("- Case %d: " % c + ", ".join(
-            "H0/%d %.1f m%s%s" % (r["cells"], r["runout"],
-                                  " (%+.0f %%)" % (100.0*(r["runout"]/ref - 1.0)) if ref else "",
-                                  "" if r["atRest"] else " moving at %g s" % r["endTime"])
+            "H0/%d %.1f m%s%s%s" % (r["cells"], r["runout"],
+                                    " (%+.0f %%)" % (100.0*(r["runout"]/ref - 1.0)) if ref else "",
+                                    "" if r["atRest"] else " moving at %g s" % r["endTime"],
+                                    " (Cauchy rate)" if r.get("stressRate", "cauchy") == "cauchy" else "")
             for r in sorted(runs, key=lambda r: r["cells"])))
     if conv:
         lines += ["", "Every stored cell with %dx%d particles, coarse to fine (H0/60 is the paper's set-up; error "
