@@ -714,19 +714,21 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
             dil = avg(i, j, 0);   // the cell's mean
         }
         double xip = xi(p), sup, gdot;
-        // V0/V from the mass: a particle is seeded at the slide's density, and splitting halves m and V together.
+        const double Vn = V(p), Vn1 = Vn*UndrainedClay::stretchFactor(dil*dt);
+        // V0 from the mass: a particle is seeded at the slide's density, and splitting halves m and V together.
+        const double invVn1 = 1.0/Vn1;
         const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot, record, lagged ? plasticRate(p) : 0.0,
-                                       m(p)*invDensity/V(p));
+                                       Vn*invVn1, m(p)*invDensity*invVn1);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         xi(p) = xip;
-        if (dXi > 0.0) work(p) += sup*dXi*V(p);   // the return's dissipation, s:dEps_p = s_u dXi
+        if (dXi > 0.0) work(p) += sup*dXi*Vn;   // the return's dissipation, s:dEps_p = s_u dXi
         if (record)   // three stores a step fewer: 7 % of the memory traffic
         {
             su(p) = sup;
             rate(p) = gdot;
         }
         if (record || lagged) plasticRate(p) = dXi/dt;
-        V(p) *= UndrainedClay::stretchFactor(dil*dt);
+        V(p) = Vn1;
         len(p, 0) = std::fmin(maxLength, len(p, 0)*UndrainedClay::stretchFactor(Lp[0]*dt));   // fmin: std::min is host-only under nvcc
         len(p, 1) = std::fmin(maxLength, len(p, 1)*UndrainedClay::stretchFactor(Lp[3]*dt));
         const double xn = x(p, 0) + dt*v(p, 0);

@@ -168,8 +168,9 @@ TEST(UndrainedClay, CompressionResistanceGrowsWithoutBound)
     double sig[4] = {0.0, 0.0, 0.0, 0.0}, xi = 0.0, su = 0.0, gdot = 0.0, J = 1.0, lastForce = 0.0;
     for (int k = 0; k < 7000; ++k)   // to J = e^-14
     {
-        c.update(L, 2.0*rate, dt, sig, xi, su, gdot, true, 0.0, 1.0/J);
-        J *= UndrainedClay::stretchFactor(2.0*rate*dt);
+        const double stretch = UndrainedClay::stretchFactor(2.0*rate*dt);
+        c.update(L, 2.0*rate, dt, sig, xi, su, gdot, true, 0.0, 1.0/stretch, 1.0/(J*stretch));
+        J *= stretch;
         const double force = -J*UndrainedClay::third*(sig[0] + sig[1] + sig[2]);
         ASSERT_GT(force, lastForce) << "step " << k << ", J " << J;
         ASSERT_NEAR(force, -K*std::log(J), 1e-9*K*std::fabs(std::log(J))) << "step " << k;
@@ -191,8 +192,9 @@ TEST(UndrainedClay, CompressionResistanceGrowsWithoutBound)
     J = 1.0;
     for (int k = 0; k < 7000; ++k)
     {
-        cauchy.update(L, 2.0*rate, dt, s2, xi, su, gdot, true, 0.0, 1.0/J);
-        J *= UndrainedClay::stretchFactor(2.0*rate*dt);
+        const double stretch = UndrainedClay::stretchFactor(2.0*rate*dt);
+        cauchy.update(L, 2.0*rate, dt, s2, xi, su, gdot, true, 0.0, 1.0/stretch, 1.0/(J*stretch));
+        J *= stretch;
         force = -J*UndrainedClay::third*(s2[0] + s2[1] + s2[2]);
         if (force > peak) { peak = force; peakJ = J; }
     }
