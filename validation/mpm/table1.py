@@ -39,6 +39,11 @@ OLD_DETECTOR = " (mechanism from the detector before session 25, which parted bo
 CAUCHY = " (Cauchy stress rate, before session 40)"
 
 
+def cauchy_rate(r):
+    """Whether row r ran with the Cauchy stress's rate (rows without the key are older than the choice)."""
+    return r.get("stressRate", "cauchy") == "cauchy"
+
+
 def run_case(c, cells, ppc, work, scene=None, numerics=None, tag="", end_time=None):
     """slideMPM on Table 1 Case c at cell H0/cells with ppc x ppc particles; `scene` sets entries of the
     case's constant/sceneProperties (a sensitivity run, e.g. {"eta": 0}), `numerics` more of its mpmDict,
@@ -148,7 +153,7 @@ def main():
                 why = res["failed"].split("FATAL ERROR:")[-1].strip().split("\n")[0] \
                     if "FATAL ERROR:" in res["failed"] else ""
                 row += " failed%s%s | | | |" % ((": " + why.split(" (")[0]) if why else "",
-                                                CAUCHY if res.get("stressRate", "cauchy") == "cauchy" else "")
+                                                CAUCHY if cauchy_rate(res) else "")
                 continue
             ref = vals.get("MPM", vals.get("DAM"))
             err = "%+.0f %%" % (100.0*(res["runout"]/ref - 1.0)) if ref else ""
@@ -163,7 +168,7 @@ def main():
                 extra = "; shear band %s" % res["shearBand"]
             if res.get("breakawayFilm") is None and c in FILM_SENSITIVE:
                 extra += OLD_DETECTOR
-            if res.get("stressRate", "cauchy") == "cauchy":
+            if cauchy_rate(res):
                 extra += CAUCHY
             row += " %.1f%s | %s | %s%s | %.0f s |" % (res["runout"], state, err, res["mechanism"], extra, res["wall"])
         lines.append(row)
@@ -179,7 +184,7 @@ def main():
                              "" if r["atRest"] else " (moving, t = %g s)" % r["endTime"], r["mechanism"],
                              r["mech10"], r["mech30"], r["shearBand"], r["wall"],
                              (OLD_DETECTOR if r.get("breakawayFilm") is None else "")
-                             + (CAUCHY if r.get("stressRate", "cauchy") == "cauchy" else "")))
+                             + (CAUCHY if cauchy_rate(r) else "")))
     # Every stored cell of a case with these particles, coarse to fine: the convergence in the cell, and the
     # paper's own set-up (H0/60, 4x4) where it was run.
     conv = []
@@ -192,7 +197,7 @@ def main():
             "H0/%d %.1f m%s%s%s" % (r["cells"], r["runout"],
                                     " (%+.0f %%)" % (100.0*(r["runout"]/ref - 1.0)) if ref else "",
                                     "" if r["atRest"] else " moving at %g s" % r["endTime"],
-                                    " (Cauchy rate)" if r.get("stressRate", "cauchy") == "cauchy" else "")
+                                    " (Cauchy rate)" if cauchy_rate(r) else "")
             for r in sorted(runs, key=lambda r: r["cells"])))
     if conv:
         lines += ["", "Every stored cell with %dx%d particles, coarse to fine (H0/60 is the paper's set-up; error "
