@@ -83,6 +83,9 @@ def case_result(c, cells, ppc, d):
             "baseContact": s.get("base_contact", "withinCell"),
             "baseRowMassScaling": s.get("base_row_mass_scaling"),
             "stressRate": s.get("stress_rate", "cauchy"),
+            # The energy budget's remainder (gravity's work neither kinetic, elastic, plastic nor the boundary's),
+            # as a share of gravity's work: what the discretisation lost.
+            "numericalDissipation": s.get("numerical_dissipation_fraction"),
             # Absent: the mechanism came from the detector before session 25, which parted bodies by empty columns
             # only (a no-slip base keeps a remoulded film between bodies that slid apart).
             "breakawayFilm": s.get("breakaway_film_height_m"),
