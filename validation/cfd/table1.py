@@ -129,7 +129,8 @@ def case_row(c, cells, d, dam_runout, mesh):
 
 
 def row_key(r):
-    return r["case"], r["cells"], bool(r.get("xi_per_cell"))
+    # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
+    return r["case"], r["cells"], r["cells"]*(r.get("refinement") or 1), bool(r.get("xi_per_cell"))
 
 
 def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
@@ -142,7 +143,8 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?$", os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
-    key = int(m.group(1)), int(m.group(2)), bool(m.group(3))
+    refinement = int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)
+    key = int(m.group(1)), int(m.group(2)), int(m.group(2))*refinement, bool(m.group(3))
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
         raise SystemExit("--continue: table1.json has no run of Case %d at H0/%d to continue" % key[:2])
@@ -309,7 +311,13 @@ def main():
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(1, 2, figsize=(12, 4))
     ok = [r for r in results if "failed" not in r]
-    labels = ["C%d H0/%d%s" % (r["case"], r["cells"], counting(r)) for r in ok]
+    def mesh_label(r):
+        # The base's cells where another row of the case has the same cells above them.
+        twins = [o for o in ok if (o["case"], o["cells"]) == (r["case"], r["cells"]) and o is not r
+                 and (o.get("refinement") or 1) != (r.get("refinement") or 1)]
+        return "H0/%d%s%s" % (r["cells"], ", H0/%d base" % (r["cells"]*(r.get("refinement") or 1)) if twins else "",
+                              counting(r))
+    labels = ["C%d %s" % (r["case"], mesh_label(r)) for r in ok]
     xs = range(len(ok))
     ax[0].bar([x - 0.2 for x in xs], [paper[r["case"]][1].get("CFD", 0) for r in ok], 0.4, label="paper CFD")
     ax[0].bar([x + 0.2 for x in xs], [r["runout"] for r in ok], 0.4, label="slideFoam")
@@ -320,7 +328,7 @@ def main():
     ax[0].legend()
     for r in ok:
         h = r["history"]
-        ax[1].plot([p[0] for p in h], [p[1] for p in h], label="Case %d H0/%d%s" % (r["case"], r["cells"], counting(r)))
+        ax[1].plot([p[0] for p in h], [p[1] for p in h], label="Case %d %s" % (r["case"], mesh_label(r)))
     ax[1].set_xlabel("time [s]")
     ax[1].set_ylabel("front travel [m]")
     ax[1].legend(fontsize=7)
