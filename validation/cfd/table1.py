@@ -128,9 +128,14 @@ def case_row(c, cells, d, dam_runout, mesh):
             "history": [[float(r["time"][i]), float(r["front"][i]), float(r["frontVelocity"][i])] for i in first]}
 
 
+def base_cells(r):
+    """n of the H0/n cells on the base."""
+    return r["cells"]*(r.get("refinement") or 1)
+
+
 def row_key(r):
     # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
-    return r["case"], r["cells"], r["cells"]*(r.get("refinement") or 1), bool(r.get("xi_per_cell"))
+    return r["case"], r["cells"], base_cells(r), bool(r.get("xi_per_cell"))
 
 
 def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
@@ -313,10 +318,8 @@ def main():
     ok = [r for r in results if "failed" not in r]
     def mesh_label(r):
         # The base's cells where another row of the case has the same cells above them.
-        twins = [o for o in ok if (o["case"], o["cells"]) == (r["case"], r["cells"]) and o is not r
-                 and (o.get("refinement") or 1) != (r.get("refinement") or 1)]
-        return "H0/%d%s%s" % (r["cells"], ", H0/%d base" % (r["cells"]*(r.get("refinement") or 1)) if twins else "",
-                              counting(r))
+        twins = [o for o in ok if (o["case"], o["cells"]) == (r["case"], r["cells"]) and base_cells(o) != base_cells(r)]
+        return "H0/%d%s%s" % (r["cells"], ", H0/%d base" % base_cells(r) if twins else "", counting(r))
     labels = ["C%d %s" % (r["case"], mesh_label(r)) for r in ok]
     xs = range(len(ok))
     ax[0].bar([x - 0.2 for x in xs], [paper[r["case"]][1].get("CFD", 0) for r in ok], 0.4, label="paper CFD")
