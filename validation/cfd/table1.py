@@ -148,8 +148,8 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?$", os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
-    refinement = int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)
-    key = int(m.group(1)), int(m.group(2)), int(m.group(2))*refinement, bool(m.group(3))
+    key = row_key({"case": int(m.group(1)), "cells": int(m.group(2)), "xi_per_cell": bool(m.group(3)),
+                   "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)})
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
         raise SystemExit("--continue: table1.json has no run of Case %d at H0/%d to continue" % key[:2])
@@ -276,7 +276,7 @@ def main():
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         cfd = paper[r["case"]][1].get("CFD")
-        mesh = "H0/%d" % r["cells"] + (" (H0/%d on the base)" % (r["cells"]*r["refinement"]) if r["refinement"] > 1
+        mesh = "H0/%d" % r["cells"] + (" (H0/%d on the base)" % base_cells(r) if r["refinement"] > 1
                                        else "")
         if r.get("ahead_height"):
             mesh += ", %g H0 high ahead" % r["ahead_height"]
