@@ -6,16 +6,18 @@ the error against the paper, the detected mechanism, the wall time),
 table1.png (bars) and table1.json (the raw results).
 
 Usage: validation/mpm/table1.py [--cells 10,20] [--ppc 4] [--cases 1,2,3] [--fine] [--stored]
-                                 [--end-time T]
+                                 [--end-time T] [--continue CASE_DIR --end-time T]
 (after ./Allwmake; defaults: cell H0/10 with the paper's 4 x 4 particles, all cases;
 --fine adds the runs of FINE, the cases whose mechanism needs a finer cell, about
 12 minutes on 2 cores; --end-time stops the runs at T s instead of the scene's end,
-for a scene whose end is out of reach here, e.g. Case 5's 3000 s, about 7 hours)"""
+for a scene whose end is out of reach here, e.g. Case 5's 3000 s, about 7 hours; each run's log is
+<case>/log.slideMPM in the work directory printed at the start, which is removed at the end; a run stopped by hand
+keeps it, and --continue runs it on from its latest restart state: in legs, a run longer than a session)"""
 import argparse
 import json
 import os
+import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -23,9 +25,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from slidefoam_io import mechanism_at, read_summary, read_runout  # noqa: E402
-from runner import slidefoam_env, which  # noqa: E402
+from runner import which  # noqa: E402
 from paper import paper_table  # noqa: E402
-from cfdcase import set_entry, set_method_entries  # noqa: E402
+from cfdcase import get_entry, run, set_entry, set_method_entries  # noqa: E402
 
 # Cases whose mechanism needs a finer cell than the table's, at (cells per H0, particles per cell direction):
 # Case 11 (S_t = 40) moves by shear bands, and at H0/10-H0/20 a cell is too coarse for more than one
@@ -60,11 +62,9 @@ def run_case(c, cells, ppc, work, scene=None, numerics=None, tag="", end_time=No
                                       "purgeState": 1, **(numerics or {})})
     if end_time is not None:
         set_entry(os.path.join(d, "system", "controlDict"), "endTime", "%g" % end_time)
-    p = subprocess.run([which("slideMPM"), "-case", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                       env=slidefoam_env())
-    log = p.stdout.decode(errors="replace")
-    if p.returncode != 0:
-        return {"case": c, "cells": cells, "ppc": ppc, "failed": log[-800:],
+    print("case %2d H0/%d %dx%d: %s/log.slideMPM" % (c, cells, ppc, ppc, d), flush=True)
+    if run(d, which("slideMPM"), "-case", ".", check=False) != 0:
+        return {"case": c, "cells": cells, "ppc": ppc, "failed": open(os.path.join(d, "log.slideMPM")).read()[-800:],
                 "stressRate": (numerics or {}).get("stressRate", "kirchhoff")}
     res = case_result(c, cells, ppc, d)
     if end_time is not None:
@@ -94,6 +94,53 @@ def case_result(c, cells, ppc, d):
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}
 
 
+def legs_run(d):
+    """The legs run in case directory d, read from their logs (log.slideMPM, log.slideMPM.from<t> of --continue):
+    [start, last time printed, wall time until then], in order."""
+    legs = []
+    for name in os.listdir(d):
+        m = re.match(r"^log\.slideMPM(?:\.from([0-9.eE+-]+))?$", name)
+        rows = re.findall(r"^Time = ([0-9.eE+-]+) .*ExecutionTime = ([0-9.eE+-]+) s",
+                          open(os.path.join(d, name)).read(), re.M) if m else []
+        if rows:
+            legs.append([float(m.group(1) or 0.0), float(rows[-1][0]), float(rows[-1][1])])
+    return sorted(legs)
+
+
+def continue_case(d, end_time):
+    """Runs a case directory of an earlier table1.py run (one stopped by hand keeps its work directory) on from
+    its latest restart state to end_time, and returns its table1.json row; its wall time is the sum of the legs'
+    logs, each counted to its last progress line, the work after the latest state that a stopped leg lost included."""
+    m = re.match(r"^case(\d+)_h(\d+)_p(\d+)$", os.path.basename(os.path.normpath(d)))
+    if not m:
+        raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_hN_pN)" % d)
+    c, cells, ppc = (int(g) for g in m.groups())
+    states = [float(t) for t in os.listdir(d) if re.match(r"^[0-9.eE+-]+$", t)
+              and os.path.exists(os.path.join(d, t, "slideMPM.state"))]
+    if not states:
+        raise SystemExit("--continue: %s holds no restart state (<time>/slideMPM.state)" % d)
+    if end_time <= max(states):
+        raise SystemExit("--continue: %s has run to %g s; give a later --end-time" % (d, max(states)))
+    control = os.path.join(d, "system", "controlDict")
+    set_entry(control, "startFrom", "latestTime")
+    set_entry(control, "endTime", "%g" % end_time)
+    log = "log.slideMPM.from%g" % max(states)
+    print("case %2d H0/%d %dx%d: on from %g s to %g s, %s" % (c, cells, ppc, ppc, max(states), end_time,
+                                                             os.path.join(d, log)), flush=True)
+    if run(d, which("slideMPM"), "-case", ".", log=log, check=False) != 0:
+        raise SystemExit("--continue: slideMPM failed in %s:\n%s" % (d, open(os.path.join(d, log)).read()[-800:]))
+    res = case_result(c, cells, ppc, d)
+    legs = legs_run(d)
+    if not legs or legs[0][0] > 0.0:
+        print("--continue: no log of the leg from 0 s in %s: the wall time counts the later legs only" % d)
+    res.update(wall=sum(leg[2] for leg in legs), legs=legs)
+    scene_end = get_entry(os.path.join(top, "tutorials", "table1", "case%02d" % c, "system", "controlDict"),
+                          "endTime")
+    if end_time < scene_end:
+        res["endTimeCut"] = end_time
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cells", default="10")
@@ -103,13 +150,18 @@ def main():
     ap.add_argument("--stored", action="store_true", help="rewrite table1.md/png from table1.json without running")
     ap.add_argument("--end-time", type=float, default=None,
                     help="stop the runs at this time instead of the scene's end (the table says so)")
+    ap.add_argument("--continue", dest="cont", metavar="CASE_DIR",
+                    help="run a kept case directory of an earlier run on from its latest state to --end-time, "
+                         "and store its row")
     args = ap.parse_args()
+    if args.cont and args.end_time is None:
+        raise SystemExit("--continue needs --end-time")
     cells = [int(x) for x in args.cells.split(",")]
     cases = [int(x) for x in args.cases.split(",")]
     paper = paper_table()
     work = tempfile.mkdtemp(prefix="slideMPM_table1_")
-    results = []
-    for c in ([] if args.stored else cases):
+    results = [continue_case(args.cont, args.end_time)] if args.cont else []
+    for c in ([] if args.stored or args.cont else cases):
         for h in cells:
             res = run_case(c, h, args.ppc, work, end_time=args.end_time)
             results.append(res)
@@ -117,7 +169,7 @@ def main():
                   "%.1f m (%s, %s), %.0f s" % (res["runout"], res["mechanism"],
                                                "at rest" if res["atRest"] else "moving at t = %g s" % res["endTime"],
                                                res["wall"])), flush=True)
-    for c in ([] if args.stored or not args.fine else [c for c in cases if c in FINE]):
+    for c in ([] if args.stored or args.cont or not args.fine else [c for c in cases if c in FINE]):
         res = run_case(c, FINE[c][0], FINE[c][1], work)
         results.append(res)
         print("case %2d H0/%d %dx%d: %s" % (c, FINE[c][0], FINE[c][1], FINE[c][1], res.get("runout", "FAILED")),
