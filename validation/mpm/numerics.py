@@ -9,13 +9,15 @@ numerics.json beside this script.
 The question it answers (Case 2 by default): Case 2 converges in the cell to about 56 m at the paper's 4x4
 particles (H0/40 and H0/60 within 1.7 %), 17 % short of the paper's MPM (68 m), while slideFoam and slideDAM run
 61-64 m. If the runout at a fine cell still moved with the transfer, the convergence in the cell would be APIC's
-and not the model's.
+and not the model's. On Case 1, whose runout falls with every cell from H0/20 on (README, open problem 5), the
+rate-free variants (below) ask how much of that fall is Eq. (1)'s rate term met in a shear layer the cell sets.
 
-Usage: validation/mpm/numerics.py [--cases 2] [--cells 20,40] [--ppc 4] [--variants quadratic,stiff,quadraticStiff]
-                                  [--stored]
+Usage: validation/mpm/numerics.py [--cases 2] [--cells 20,40] [--ppc 4] [--variants quadratic,stiff,...]
+                                  [--end-time T] [--stored]
 (4x4 with the quadratic transfer on 2 cores: Case 2 5 minutes at H0/20 and 34 minutes at H0/40, Case 1 7 minutes
-at H0/20; the stiff variants take about three times the steps; a run keeps the stored results of the other cases,
-cells and variants)"""
+at H0/20 and 29 minutes at H0/40 to 40 s, rate-free 3 and 18 minutes; the stiff variants take about three times
+the steps; a run keeps the stored results of the other cases, cells and variants; --end-time stops the runs at T s,
+to set a run beside a Table 1 row that was stopped there)"""
 import argparse
 import json
 import os
@@ -27,12 +29,23 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
 from table1 import cauchy_rate, run_case, paper_table  # noqa: E402
 
-# (key, heading, mpmDict entries); "apic" is table1.json's row, the default numerics.
-VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None),
-            ("quadratic", "quadratic transfer", {"transfer": "quadratic"}),
-            ("stiff", "E = 1000 s_uo", {"youngsModulusRatio": 1000}),
+# (key, heading, mpmDict entries, sceneProperties entries); "apic" is table1.json's row, the default numerics.
+# "rateFree" and "rateFreeApic" are not numerics but Case 1 without Eq. (1)'s rate term, with the quadratic transfer
+# and with APIC. In a shear layer a cell or two thick the strain rate, and with it the rate term's strength, grows as
+# the cell shrinks: a runout that falls with the cell with the rate term and not without it falls by the rate term's
+# resolution. Their s_uo, 225 Pa, is Eq. (1)'s strength at about 1 1/s (150 (1 + 0.35 (1/0.06)^0.15) = 229 Pa), and
+# E = (100/1.5) s_uo keeps Case 1's 15 kPa; the script refuses them on another case.
+VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
+            ("quadratic", "quadratic transfer", {"transfer": "quadratic"}, None),
+            ("stiff", "E = 1000 s_uo", {"youngsModulusRatio": 1000}, None),
             ("quadraticStiff", "quadratic transfer, E = 1000 s_uo", {"transfer": "quadratic",
-                                                                    "youngsModulusRatio": 1000}))
+                                                                    "youngsModulusRatio": 1000}, None),
+            ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", {"youngsModulusRatio": 100/1.5},
+             {"eta": 0, "s_uo": 225}),
+            ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)", {"transfer": "quadratic",
+                                                                                      "youngsModulusRatio": 100/1.5},
+             {"eta": 0, "s_uo": 225}))
+RATE_FREE = ("rateFreeApic", "rateFree")
 KEYS = [v[0] for v in VARIANTS]
 
 
@@ -50,8 +63,12 @@ def main():
     ap.add_argument("--ppc", type=int, default=4)
     ap.add_argument("--variants", default="quadratic,stiff,quadraticStiff")
     ap.add_argument("--stored", action="store_true", help="rewrite numerics.md from numerics.json without running")
+    ap.add_argument("--end-time", type=float, default=None, help="stop the runs at this time [s]")
     args = ap.parse_args()
     cells = [int(x) for x in args.cells.split(",")]
+    if set(RATE_FREE) & set(args.variants.split(",")) and args.cases != "1":
+        raise SystemExit("numerics.py: --variants %s are Case 1's strength without the rate term: --cases 1 only"
+                         % ",".join(RATE_FREE))
     wanted = args.variants.split(",")
     for v in wanted:
         if v not in KEYS[1:]:
@@ -61,11 +78,15 @@ def main():
     results = []
     if not args.stored:
         work = tempfile.mkdtemp(prefix="slideMPM_numerics_")
-        for case, n, (key, _, numerics) in [(c, n, v) for c in [int(x) for x in args.cases.split(",")]
+        for case, n, (key, _, numerics, scene) in [(c, n, v) for c in [int(x) for x in args.cases.split(",")]
                                              for n in cells for v in VARIANTS if v[0] in wanted]:
-            res = run_case(case, n, args.ppc, work, numerics=numerics, tag="_" + key)
+            res = run_case(case, n, args.ppc, work, numerics=numerics, scene=scene, tag="_" + key,
+                           end_time=args.end_time)
             res["variant"] = key
-            res.pop("history", None)
+            history = res.pop("history", None) or []
+            # The front at the times the README compares meshes at (the history itself is too long to store).
+            res["frontAt"] = {"%g" % t: next((h[1] for h in history if h[0] >= t - 1e-9), None)
+                              for t in (10, 20, 25, 30)}
             results.append(res)
             print("case %d H0/%d %s: %s" % (case, n, key, "FAILED" if "failed" in res else
                                             "%.2f m, %s, %.0f s wall" % (
@@ -92,7 +113,9 @@ def write_table(results):
              "numerics (APIC, E = 100 s_uo: table1.json's row, marked where it ran with the Cauchy stress's rate, "
              "before session 40); numerical: the energy budget's remainder, the share of gravity's work that is neither "
              "kinetic, elastic, plastic nor the boundary's (what the discretisation lost; absent from rows run "
-             "before it was stored); wall: seconds on 2 threads of the 2-core machine that ran it.", "",
+             "before it was stored); wall: seconds on 2 threads of the 2-core machine that ran it. The rate-free columns are Case 1 without Eq. (1)'s "
+             "rate term and with s_uo 225 Pa (the script's comment says why): another model, to be read down the "
+             "column, between cells; their brackets say only how far that model runs beyond Eq. (1).", "",
              "| case | cell | particles per cell | paper MPM [m] | " + " | ".join(v[1] for v in VARIANTS) + " |",
              "|---|---|---|---|" + "---|"*len(VARIANTS)]
     for case, ppc, n in sorted({(r["case"], r["ppc"], r["cells"]) for r in results}):
