@@ -66,7 +66,8 @@ def table1_results():
     # Per case: a resolved run first (no slide thinner than its cells at the end, alpha max >= 0.9), then H0/10 with
     # H0/40 on the base, then the finest mesh (Case 4's H0/20 beside its unresolved H0/10), marked so.
     def preference(r):
-        return not unresolved(r), r["cells"] == 10, r["cells"]
+        # The base's cells too: Case 1 also ran at H0/10 with H0/20 and H0/80 on the base (session 46, a study).
+        return not unresolved(r), r["cells"] == 10, r["cells"]*r["refinement"] == 40, r["cells"]
     chosen = {}
     for r in load("cfd/table1.json") or []:
         if r.get("xi_per_cell"):
