@@ -9,22 +9,13 @@ Usage: validation/cfd/volumeFront.py CASE_DIR [--time T] [--shares 0.001,0.01]
 environment of etc/bashrc for postProcess, which writes the cell centres and volumes into that time)"""
 import argparse
 import os
-import re
 import subprocess
+import sys
 
 import numpy as np
 
-
-def internal_field(path):
-    """The internalField of an ascii OpenFOAM volume field: an (n,) or (n, 3) array."""
-    text = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", text)
-    if not m:
-        raise SystemExit("%s: no nonuniform ascii internalField" % path)
-    body = text[m.end():text.index(")\n;", m.end())]
-    if m.group(1) == "vector":
-        return np.array([[float(v) for v in t.split()] for t in re.findall(r"\(([^()]+)\)", body)])
-    return np.array(body.split(), dtype=float)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+from cfdcase import read_field, time_dirs  # noqa: E402
 
 
 def main():
@@ -33,32 +24,35 @@ def main():
     ap.add_argument("--time", default=None)
     ap.add_argument("--shares", default="0.001,0.01")
     args = ap.parse_args()
-    times = [t for t in os.listdir(args.case) if re.match(r"^[0-9.eE+-]+$", t) and t != "0"
-             and os.path.exists(os.path.join(args.case, t, "alpha.slide"))]
+    times = [t for t in time_dirs(args.case) if t != "0" and os.path.exists(os.path.join(args.case, t, "alpha.slide"))]
     if not times:
         raise SystemExit("%s: no reconstructed time with alpha.slide" % args.case)
-    t = args.time or max(times, key=float)
+    t = args.time or times[-1]
     if not os.path.exists(os.path.join(args.case, t, "alpha.slide")):
         raise SystemExit("%s: no %s/alpha.slide" % (args.case, t))
+    now, start = slide_along_base(args.case, t), slide_along_base(args.case, "0")
     print("%s at %s s, the front's travel from the initial front:" % (args.case, t))
     for share in (float(s) for s in args.shares.split(",")):
-        print("  with %g of the slide beyond it: %.2f m" % (share, quantile_front(args.case, t, share)
-                                                           - quantile_front(args.case, "0", share)))
+        print("  with %g of the slide beyond it: %.2f m" % (share, quantile_front(*now, share)
+                                                           - quantile_front(*start, share)))
 
 
-def quantile_front(case, t, share):
-    """The largest cell centre along the base with at least `share` of the slide's volume at or beyond it."""
-    d = os.path.join(case, t)
-    if not (os.path.exists(os.path.join(d, "C")) and os.path.exists(os.path.join(d, "V"))):
+def slide_along_base(case, t):
+    """The cells' centres along the base and the slide's volume in each, at time t (sorted along the base)."""
+    if not all(os.path.exists(os.path.join(case, t, f)) for f in ("C", "V")):
         for func in ("writeCellCentres", "writeCellVolumes"):
             subprocess.run(["postProcess", "-case", case, "-time", t, "-func", func], check=True,
                            stdout=subprocess.DEVNULL)
-    alpha = internal_field(os.path.join(d, "alpha.slide"))
-    x = internal_field(os.path.join(d, "C"))[:, 0]
-    slide = alpha.clip(0.0, 1.0)*internal_field(os.path.join(d, "V"))
+    x = read_field(case, t, "C")[:, 0]
+    slide = read_field(case, t, "alpha.slide").clip(0.0, 1.0)*read_field(case, t, "V")
     order = np.argsort(x)
-    beyond = slide[order][::-1].cumsum()[::-1]/slide.sum()
-    return x[order][beyond >= share].max()
+    return x[order], slide[order]
+
+
+def quantile_front(x, slide, share):
+    """The largest cell centre along the base with at least `share` of the slide's volume at or beyond it."""
+    beyond = slide[::-1].cumsum()[::-1]/slide.sum()
+    return x[beyond >= share].max()
 
 
 if __name__ == "__main__":
