@@ -25,7 +25,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "lib"))
 from paper import paper_table  # noqa: E402
-from slidefoam_io import unresolved  # noqa: E402
+from slidefoam_io import base_cells, unresolved  # noqa: E402
 sys.path.insert(0, os.path.join(HERE, "mpm"))
 from table1 import FINE as MPM_FINE  # noqa: E402
 
@@ -67,7 +67,7 @@ def table1_results():
     # H0/40 on the base, then the finest mesh (Case 4's H0/20 beside its unresolved H0/10), marked so.
     def preference(r):
         # The base's cells too: Case 1 also ran at H0/10 with H0/20 and H0/80 on the base (session 46, a study).
-        return not unresolved(r), r["cells"] == 10, r["cells"]*r["refinement"] == 40, r["cells"]
+        return not unresolved(r), r["cells"] == 10, base_cells(r) == 40, r["cells"]
     chosen = {}
     for r in load("cfd/table1.json") or []:
         if r.get("xi_per_cell"):
@@ -84,7 +84,7 @@ def table1_results():
                          # where the rest test failed on the RMS speed of material smeared below alpha 0.5.
                          "cellsStill": r.get("max_velocity") is not None and r["max_velocity"] < 0.01,
                          "history": cfd_history(r.get("history", [])),
-                         "setup": "H0/%d, H0/%d on the base" % (r["cells"], r["cells"]*r["refinement"]),
+                         "setup": "H0/%d, H0/%d on the base" % (r["cells"], base_cells(r)),
                          "note": ("" if r["cells"] == 10 else ", H0/%d" % r["cells"])
                          + (", lid on top" if r.get("top") == "slip" else "")
                          + (", unresolved: alpha max %.2f" % r["alpha_max"] if unresolved(r) else "")}

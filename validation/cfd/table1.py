@@ -24,7 +24,7 @@ sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
 from paper import paper_table  # noqa: E402
 from runner import which  # noqa: E402
-from slidefoam_io import read_summary, read_runout, unresolved  # noqa: E402
+from slidefoam_io import base_cells, read_summary, read_runout, unresolved  # noqa: E402
 
 
 def fatal_error(log):
@@ -126,11 +126,6 @@ def case_row(c, cells, d, dam_runout, mesh):
             # time, front, front velocity (runout.dat's, the alpha-weighted speed of the front's column; rows
             # before session 37 hold time and front alone).
             "history": [[float(r["time"][i]), float(r["front"][i]), float(r["frontVelocity"][i])] for i in first]}
-
-
-def base_cells(r):
-    """n of the H0/n cells on the base."""
-    return r["cells"]*(r.get("refinement") or 1)
 
 
 def row_key(r):

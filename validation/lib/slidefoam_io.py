@@ -21,6 +21,11 @@ def unresolved(row):
     return row.get("alpha_max", 1.0) < 0.9
 
 
+def base_cells(row):
+    """n of the H0/n cells on the base of a slideFoam run (validation/cfd/table1.json's row)."""
+    return row["cells"]*(row.get("refinement") or 1)
+
+
 def read_summary(path):
     with open(path) as f:
         return json.load(f)

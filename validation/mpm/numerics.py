@@ -35,16 +35,16 @@ from table1 import cauchy_rate, run_case, paper_table  # noqa: E402
 # the cell shrinks: a runout that falls with the cell with the rate term and not without it falls by the rate term's
 # resolution. Their s_uo, 225 Pa, is Eq. (1)'s strength at about 1 1/s (150 (1 + 0.35 (1/0.06)^0.15) = 229 Pa), and
 # E = (100/1.5) s_uo keeps Case 1's 15 kPa; the script refuses them on another case.
+RATE_FREE_SCENE = {"eta": 0, "s_uo": 225}
+RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
 VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("quadratic", "quadratic transfer", {"transfer": "quadratic"}, None),
             ("stiff", "E = 1000 s_uo", {"youngsModulusRatio": 1000}, None),
             ("quadraticStiff", "quadratic transfer, E = 1000 s_uo", {"transfer": "quadratic",
                                                                     "youngsModulusRatio": 1000}, None),
-            ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", {"youngsModulusRatio": 100/1.5},
-             {"eta": 0, "s_uo": 225}),
-            ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)", {"transfer": "quadratic",
-                                                                                      "youngsModulusRatio": 100/1.5},
-             {"eta": 0, "s_uo": 225}))
+            ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", RATE_FREE_CLAY, RATE_FREE_SCENE),
+            ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)",
+             {"transfer": "quadratic", **RATE_FREE_CLAY}, RATE_FREE_SCENE))
 RATE_FREE = ("rateFreeApic", "rateFree")
 KEYS = [v[0] for v in VARIANTS]
 
@@ -66,10 +66,10 @@ def main():
     ap.add_argument("--end-time", type=float, default=None, help="stop the runs at this time [s]")
     args = ap.parse_args()
     cells = [int(x) for x in args.cells.split(",")]
-    if set(RATE_FREE) & set(args.variants.split(",")) and args.cases != "1":
+    wanted = args.variants.split(",")
+    if set(RATE_FREE) & set(wanted) and args.cases != "1":
         raise SystemExit("numerics.py: --variants %s are Case 1's strength without the rate term: --cases 1 only"
                          % ",".join(RATE_FREE))
-    wanted = args.variants.split(",")
     for v in wanted:
         if v not in KEYS[1:]:
             raise SystemExit("numerics.py: --variants: unknown variant '%s' (known: %s)" % (v, ", ".join(KEYS[1:])))
