@@ -7,7 +7,7 @@ against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
                                  [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
-                                 [--max-co 0.25] [--xi-per-cell] [--top slip] [--reach 1600] [--end-time 100]
+                                 [--max-co 0.25] [--xi-per-cell] [--rate-free] [--top slip] [--reach 1600] [--end-time 100]
                                  [--replot] [--continue CASE_DIR --end-time 200]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
@@ -22,7 +22,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
-from paper import paper_table  # noqa: E402
+from paper import CASE1_RATE_FREE_SCENE, paper_table  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import base_cells, read_summary, read_runout, unresolved  # noqa: E402
 
@@ -34,8 +34,15 @@ def fatal_error(log):
 
 
 def counting(r):
-    """", xi per cell" for a row whose xi counted each cell's strain (--xi-per-cell), else ""."""
-    return ", xi per cell" if r.get("xi_per_cell") else ""
+    """", xi per cell" for a row whose xi counted each cell's strain (--xi-per-cell), ", no rate effect" for Case 1
+    without Eq. (1)'s rate term (--rate-free), else ""."""
+    return (", xi per cell" if r.get("xi_per_cell") else "") + (", no rate effect" if r.get("rate_free") else "")
+
+
+def case_name(c, cells, mesh):
+    """The work directory's name of a run: caseNN_H0_n with what the row's key adds (--continue reads it back)."""
+    return "case%02d_H0_%d%s%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else "",
+                                   "_rateFree" if mesh.get("rate_free") else "")
 
 
 # Mesh and run options passed to cfdDict as numbers: (option and row key, cfdDict entry, help).
@@ -61,7 +68,8 @@ def unresolved_note(r):
 
 
 def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
-    """mesh: refinement, max_co, xi_per_cell, top and CFD_ENTRIES' keys (None: the tutorial's or slideDAM's)."""
+    """mesh: refinement, max_co, xi_per_cell, rate_free, top and CFD_ENTRIES' keys (None: the tutorial's or
+    slideDAM's)."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": mesh["refinement"], "processors": processors}
     if mesh.get("xi_per_cell"):
@@ -73,8 +81,8 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
             cfd[entry] = "%.6g" % mesh[key]
     control = {"maxCo": mesh["max_co"], "maxAlphaCo": mesh["max_co"]} if mesh.get("max_co") else None
     # The tutorial's cfdDict with the mesh set: what else it says (a scene's shearBandThickness) is kept.
-    d = make_case(src, work, "case%02d_H0_%d%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else ""),
-                  control=control)
+    d = make_case(src, work, case_name(c, cells, mesh), control=control,
+                  scene=CASE1_RATE_FREE_SCENE if mesh.get("rate_free") else None)
     set_method_entries(d, "cfdDict", cfd)
     run(d, which("slideDAM"), "-case", ".")
     dam = read_summary(os.path.join(d, "postProcessing", "slideDAM", "summary.json"))
@@ -130,7 +138,7 @@ def case_row(c, cells, d, dam_runout, mesh):
 
 def row_key(r):
     # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
-    return r["case"], r["cells"], base_cells(r), bool(r.get("xi_per_cell"))
+    return r["case"], r["cells"], base_cells(r), bool(r.get("xi_per_cell")), bool(r.get("rate_free"))
 
 
 def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
@@ -140,10 +148,11 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from). ambient_relaxation:
     the light ambient relaxes to rest on this time scale [s] from the leg's start on (cfdDict ambientRelaxationTime
     and the constant/fvOptions slideFoamCase writes for it)."""
-    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?$", os.path.basename(os.path.normpath(d)))
+    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?(_rateFree)?$", os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
     key = row_key({"case": int(m.group(1)), "cells": int(m.group(2)), "xi_per_cell": bool(m.group(3)),
+                   "rate_free": bool(m.group(4)),
                    "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)})
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
@@ -191,7 +200,8 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
         s = read_summary(summary)
     legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
-    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "top", "ambient_relaxation_steps"]
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "rate_free", "top",
+                                    "ambient_relaxation_steps"]
             + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
     for k, entry, _ in CFD_ENTRIES:
@@ -223,6 +233,9 @@ def main():
     ap.add_argument("--xi-per-cell", action="store_true",
                     help="xi counts the strain of each cell (cfdDict shearBandThickness 0) instead of the tutorial's "
                     "shear bands of H0/60: the remoulding Cases 10-13 as the CFD ran them until session 29")
+    ap.add_argument("--rate-free", action="store_true",
+                    help="Case 1 without Eq. (1)'s rate term (eta 0, s_uo 225 Pa; validation/lib/paper.py): how "
+                    "much of the runout's dependence on the cells is the rate term's")
     ap.add_argument("--top", choices=["open", "slip"], default=None,
                     help="the mesh's top (cfdDict top; default open): slip closes it with a lid that keeps the spray "
                     "a fast thin head throws into the light ambient (Case 4) in the domain")
@@ -236,6 +249,8 @@ def main():
     cells = [int(v) for v in args.cells.split(",")]
     cases = [] if args.replot or args.cont else [int(v) for v in args.cases.split(",")]
     args.keep = args.keep or args.replot or bool(args.cont)
+    if args.rate_free and cases != [1]:
+        raise SystemExit("table1.py: --rate-free is Case 1's strength without the rate term: --cases 1 only")
     paper = paper_table()
     work = tempfile.mkdtemp(prefix="slideFoam_table1_")
     results = []
@@ -247,7 +262,7 @@ def main():
     for c in cases:
         for n in cells:
             mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES}, refinement=args.base_refinement,
-                        max_co=args.max_co, xi_per_cell=args.xi_per_cell, top=args.top)
+                        max_co=args.max_co, xi_per_cell=args.xi_per_cell, rate_free=args.rate_free, top=args.top)
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
@@ -298,7 +313,8 @@ def main():
             lines.append("| %d | %s | | %s | failed: %s | | | | | | | | |"
                          % (r["case"], mesh, cfd or "-", r.get("reason") or "see the run's log"))
             continue
-        err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd else "-"
+        # Without the rate term it is another slide: no error against the paper.
+        err = "%+.1f %%" % (100*(r["runout"]/cfd - 1)) if cfd and not r.get("rate_free") else "-"
         rest = ("yes" if r["at_rest"] else "no") + unresolved_note(r)
         lines.append("| %d | %s | %d | %s | %.1f | %s | %s | %s | %.0f | %.2g | %.1e | %.1f | %.0f |"
                      % (r["case"], mesh, r["n"], cfd or "-", r["runout"], err, r.get("mechanism") or "-", rest,

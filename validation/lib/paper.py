@@ -27,3 +27,11 @@ def paper_table():
     """{case: (mechanism, {"DAM": m, "MPM": m, "CFD": m})} with the values the paper gives."""
     return {c: paper_line(os.path.join(TOP, "tutorials", "table1", "case%02d" % c, "constant", "sceneProperties"))
             for c in range(1, 14)}
+
+
+# Not the paper's: Case 1 without Eq. (1)'s rate term, a diagnostic of how a method's runout depends on its cells
+# (validation/mpm/numerics.py, validation/cfd/table1.py --rate-free). In a shear layer a cell or two thick the strain
+# rate, and with it the rate term's strength, grows as the cell shrinks: a runout that falls with the cell with the
+# rate term and not without it falls by the rate term's resolution. s_uo 225 Pa is Eq. (1)'s strength at about
+# 1 1/s (150 (1 + 0.35 (1/0.06)^0.15) = 229 Pa).
+CASE1_RATE_FREE_SCENE = {"eta": 0, "s_uo": 225}

@@ -28,23 +28,21 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
 from table1 import cauchy_rate, run_case, paper_table  # noqa: E402
+from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 
 # (key, heading, mpmDict entries, sceneProperties entries); "apic" is table1.json's row, the default numerics.
-# "rateFree" and "rateFreeApic" are not numerics but Case 1 without Eq. (1)'s rate term, with the quadratic transfer
-# and with APIC. In a shear layer a cell or two thick the strain rate, and with it the rate term's strength, grows as
-# the cell shrinks: a runout that falls with the cell with the rate term and not without it falls by the rate term's
-# resolution. Their s_uo, 225 Pa, is Eq. (1)'s strength at about 1 1/s (150 (1 + 0.35 (1/0.06)^0.15) = 229 Pa), and
-# E = (100/1.5) s_uo keeps Case 1's 15 kPa; the script refuses them on another case.
-RATE_FREE_SCENE = {"eta": 0, "s_uo": 225}
-RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
+# "rateFree" and "rateFreeApic" are not numerics but Case 1 without Eq. (1)'s rate term (paper.CASE1_RATE_FREE_SCENE,
+# which says why), with the quadratic transfer and with APIC; E = (100/1.5) s_uo keeps Case 1's 15 kPa. The script
+# refuses them on another case.
+RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/CASE1_RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
 VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("quadratic", "quadratic transfer", {"transfer": "quadratic"}, None),
             ("stiff", "E = 1000 s_uo", {"youngsModulusRatio": 1000}, None),
             ("quadraticStiff", "quadratic transfer, E = 1000 s_uo", {"transfer": "quadratic",
                                                                     "youngsModulusRatio": 1000}, None),
-            ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", RATE_FREE_CLAY, RATE_FREE_SCENE),
+            ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", RATE_FREE_CLAY, CASE1_RATE_FREE_SCENE),
             ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)",
-             {"transfer": "quadratic", **RATE_FREE_CLAY}, RATE_FREE_SCENE))
+             {"transfer": "quadratic", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE))
 RATE_FREE = ("rateFreeApic", "rateFree")
 KEYS = [v[0] for v in VARIANTS]
 
