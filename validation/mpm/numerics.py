@@ -11,8 +11,9 @@ particles (H0/40 and H0/60 within 1.7 %), 17 % short of the paper's MPM (68 m), 
 61-64 m. If the runout at a fine cell still moved with the transfer, the convergence in the cell would be APIC's
 and not the model's. On Case 1, whose runout falls with every cell from H0/20 on (README, open problem 5), the
 rate-free variants (below) ask how much of that fall is Eq. (1)'s rate term met in a shear layer the cell sets,
-and rateFreeStiff, rateFreeUnscaled and rateFreeWithinCell how much of the rate-free MPM's shortfall against
-slideFoam and slideDAM is its elastic clay, the mass scaling of the grid row above the base, or the base's contact.
+and rateFreeStiff, rateFreeUnscaled, rateFreeWithinCell and rateFreeNoSplitting how much of the rate-free MPM's
+shortfall against slideFoam and slideDAM is its elastic clay, the mass scaling of the grid row above the base, the
+base's contact, or particle splitting; --ppc sets the particles per cell and direction (2, 4, 6 and 8 were run).
 
 Usage: validation/mpm/numerics.py [--cases 2] [--cells 20,40] [--ppc 4] [--variants quadratic,stiff,...]
                                   [--end-time T] [--stored]
@@ -35,8 +36,8 @@ from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 # (key, heading, mpmDict entries, sceneProperties entries); "apic" is table1.json's row, the default numerics.
 # The "rateFree" variants are not numerics but Case 1 without Eq. (1)'s rate term (paper.CASE1_RATE_FREE_SCENE, which
 # says why), with the quadratic transfer and with APIC; E = (100/1.5) s_uo keeps Case 1's 15 kPa (ten times that in
-# rateFreeStiff); rateFreeUnscaled turns off baseRowMassScaling, rateFreeWithinCell sets baseContact withinCell. The
-# script refuses them on another case.
+# rateFreeStiff); rateFreeUnscaled turns off baseRowMassScaling, rateFreeWithinCell sets baseContact withinCell,
+# rateFreeNoSplitting turns off particleSplitting. The script refuses them on another case.
 RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/CASE1_RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
 VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("quadratic", "quadratic transfer", {"transfer": "quadratic"}, None),
@@ -53,8 +54,10 @@ VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
              "the base (another model)", {"transfer": "quadratic", "baseRowMassScaling": "no", **RATE_FREE_CLAY},
              CASE1_RATE_FREE_SCENE),
             ("rateFreeWithinCell", "quadratic transfer, no rate effect, 1.5 s_uo, base contact withinCell (another "
-             "model)", {"transfer": "quadratic", "baseContact": "withinCell", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE))
-RATE_FREE = ("rateFreeApic", "rateFree", "rateFreeStiff", "rateFreeUnscaled", "rateFreeWithinCell")
+             "model)", {"transfer": "quadratic", "baseContact": "withinCell", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
+            ("rateFreeNoSplitting", "quadratic transfer, no rate effect, 1.5 s_uo, no particle splitting (another "
+             "model)", {"transfer": "quadratic", "particleSplitting": "no", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE))
+RATE_FREE = ("rateFreeApic", "rateFree", "rateFreeStiff", "rateFreeUnscaled", "rateFreeWithinCell", "rateFreeNoSplitting")
 KEYS = [v[0] for v in VARIANTS]
 
 
