@@ -13,7 +13,8 @@ and not the model's. On Case 1, whose runout falls with every cell from H0/20 on
 rate-free variants (below) ask how much of that fall is Eq. (1)'s rate term met in a shear layer the cell sets,
 and rateFreeStiff, rateFreeUnscaled, rateFreeWithinCell and rateFreeNoSplitting how much of the rate-free MPM's
 shortfall against slideFoam and slideDAM is its elastic clay, the mass scaling of the grid row above the base, the
-base's contact, or particle splitting; --ppc sets the particles per cell and direction (2, 4, 6 and 8 were run).
+base's contact or particle splitting, and the cellCapped variants how much is the particles crowding into the
+base's cell (README, open problem 13); --ppc sets the particles per cell and direction (2, 4, 6 and 8 were run).
 
 Usage: validation/mpm/numerics.py [--cases 2] [--cells 20,40] [--ppc 4] [--variants quadratic,stiff,...]
                                   [--end-time T] [--stored]
@@ -37,13 +38,16 @@ from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 # The "rateFree" variants are not numerics but Case 1 without Eq. (1)'s rate term (paper.CASE1_RATE_FREE_SCENE, which
 # says why), with the quadratic transfer and with APIC; E = (100/1.5) s_uo keeps Case 1's 15 kPa (ten times that in
 # rateFreeStiff); rateFreeUnscaled turns off baseRowMassScaling, rateFreeWithinCell sets baseContact withinCell,
-# rateFreeNoSplitting turns off particleSplitting. The script refuses them on another case.
+# rateFreeNoSplitting turns off particleSplitting, rateFreeCellCapped (and cellCapped, on any case) sets stressQuadrature
+# cellCapped. The script refuses the rate-free ones on another case.
 RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/CASE1_RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
 VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("quadratic", "quadratic transfer", {"transfer": "quadratic"}, None),
             ("stiff", "E = 1000 s_uo", {"youngsModulusRatio": 1000}, None),
             ("quadraticStiff", "quadratic transfer, E = 1000 s_uo", {"transfer": "quadratic",
                                                                     "youngsModulusRatio": 1000}, None),
+            ("cellCapped", "APIC, stress quadrature capped at each cell's area", {"stressQuadrature": "cellCapped"},
+             None),
             ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", RATE_FREE_CLAY, CASE1_RATE_FREE_SCENE),
             ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)",
              {"transfer": "quadratic", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
@@ -56,8 +60,12 @@ VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("rateFreeWithinCell", "quadratic transfer, no rate effect, 1.5 s_uo, base contact withinCell (another "
              "model)", {"transfer": "quadratic", "baseContact": "withinCell", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
             ("rateFreeNoSplitting", "quadratic transfer, no rate effect, 1.5 s_uo, no particle splitting (another "
-             "model)", {"transfer": "quadratic", "particleSplitting": "no", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE))
-RATE_FREE = ("rateFreeApic", "rateFree", "rateFreeStiff", "rateFreeUnscaled", "rateFreeWithinCell", "rateFreeNoSplitting")
+             "model)", {"transfer": "quadratic", "particleSplitting": "no", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
+            ("rateFreeCellCapped", "quadratic transfer, no rate effect, 1.5 s_uo, stress quadrature capped at each "
+             "cell's area (another model)", {"transfer": "quadratic", "stressQuadrature": "cellCapped",
+                                             **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE))
+RATE_FREE = ("rateFreeApic", "rateFree", "rateFreeStiff", "rateFreeUnscaled", "rateFreeWithinCell", "rateFreeNoSplitting",
+             "rateFreeCellCapped")
 KEYS = [v[0] for v in VARIANTS]
 
 

@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "stressQuadrature", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
                       "purgeState", "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -74,6 +74,16 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
                       ? BaseContact::touching : BaseContact::withinCell;
     }
     c.baseRowMassScaling = d.getBool("baseRowMassScaling", true);
+    if (d.found("stressQuadrature"))
+    {
+        c.stressQuadrature = d.getWordOneOf("stressQuadrature", {"particleVolume", "cellCapped"}) == "cellCapped"
+                           ? StressQuadrature::cellCapped : StressQuadrature::particleVolume;
+        if (c.stressQuadrature == StressQuadrature::cellCapped
+            && c.volumetricLocking != VolumetricLocking::cellAveraging)
+        {
+            d.fail("stressQuadrature", "cellCapped needs the cells' particle volumes of volumetricLocking cellAveraging");
+        }
+    }
     if (d.found("strainRate"))
     {
         const std::string r = d.getWordOneOf("strainRate", {"plastic", "total", "previousPlastic"});
@@ -136,6 +146,7 @@ std::string MpmControls::describe(const double cellSize) const
        << ", " << (transfer == Transfer::quadratic ? "APIC + quadratic mode across the base (PolyPIC)"
            : transfer == Transfer::apic ? "APIC" : "PIC") << " transfer, volumetric locking "
        << (volumetricLocking == VolumetricLocking::cellAveraging ? "cell averaging (B-bar)" : "not treated")
+       << (stressQuadrature == StressQuadrature::cellCapped ? ", stress quadrature capped at each cell's area" : "")
        << ", Eq. (1) at the " << (!plasticStrainRate ? "total" : previousStepRate ? "previous step's plastic"
                                                                                   : "plastic") << " shear strain rate"
        << ", elasticity in the Jaumann rate of the " << (kirchhoffStressRate ? "Kirchhoff" : "Cauchy") << " stress"

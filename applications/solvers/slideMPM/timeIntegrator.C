@@ -44,10 +44,11 @@ struct TransferSetup
 struct ParticleToGrid : TransferSetup
 {
     NodeScatter scatter;
-    NodeField avg;                // B-bar: the cell's mean pressure
+    NodeField avg;                // B-bar: the cell's mean pressure (0) and its particles' volume (1)
     ParticleTensor sig;
     double d, gX, gY;
     bool cellPressure;
+    bool cellCapped = false;      // MpmControls::StressQuadrature::cellCapped
     ColumnScatter baseFill;       // touching base contact: BackgroundGrid::baseFill
     ParticleVector size;          // the particles' domains
     bool fill = false;
@@ -73,6 +74,7 @@ struct ParticleToGrid : TransferSetup
         const double mp_ = m(p), Vp = V(p);
         double sxx = sig(p, 0), syy = sig(p, 1);
         const double sxy = sig(p, 3);
+        double Vq = Vp;   // the particle's weight in the internal force
         if (cellPressure)
         {
             // B-bar: the force sees the cell's mean pressure, as the stress update
@@ -81,10 +83,11 @@ struct ParticleToGrid : TransferSetup
             const double shift = -UndrainedClay::third*(sxx + syy + sig(p, 2)) - avg(ci, cj, 0);   // the cell's mean
             sxx += shift;
             syy += shift;
+            if (cellCapped && avg(ci, cj, 1) > d*d) Vq *= d*d/avg(ci, cj, 1);
         }
         const double vx = v(p, 0), vy = v(p, 1);
         const double C00 = C(p, 0)*d, C01 = C(p, 1)*d, C10 = C(p, 2)*d, C11 = C(p, 3)*d;
-        const double Sxx = dt*Vp*sxx*invD, Syy = dt*Vp*syy*invD, Sxy = dt*Vp*sxy*invD;
+        const double Sxx = dt*Vq*sxx*invD, Syy = dt*Vq*syy*invD, Sxy = dt*Vq*sxy*invD;
         // Node (a, b) receives, over its components (mass, momentum x and y, volume),
         // w P + w dx PDx + w dy PDy + w q PQ + gx PGx + gy PGy (dx, dy: node -
         // particle in cells; q: the quadratic mode; gx, gy: weight gradients per
@@ -449,6 +452,7 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     ParticleToGrid f;
     static_cast<TransferSetup&>(f) = TransferSetup(mp, grid, dt, controls_.transfer, fittedBase_);
     f.cellPressure = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
+    f.cellCapped = f.cellPressure && controls_.stressQuadrature == MpmControls::StressQuadrature::cellCapped;
     if (f.cellPressure && !grid.pressureSumsCurrent) averageCellPressure(mp, grid);
     f.scatter = grid.nodalScatter;
     f.avg = grid.pressureSums;

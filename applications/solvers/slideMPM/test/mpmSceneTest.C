@@ -400,6 +400,68 @@ TEST(SlideMPM, CellAveragingRemovesVolumetricLocking)
     EXPECT_LT(errBbar, 0.8*errNone);
 }
 
+// The base's load from a shear stress tau in particles crowded into the cells
+// on the base: a block squashed to half its height, volumes kept, so every cell
+// holds particles of twice its area (as the base cell of a thinning slide
+// holds 1.1-2 times its area: validation/mpm/README.md, open problem 13). With
+// the particles' volumes as weights the base's nodes take twice tau per unit
+// length; with stressQuadrature cellCapped, tau. Unsquashed, the two agree.
+double baseLoadOfAShearStress(const mpm::MpmControls::StressQuadrature quadrature, const double squash)
+{
+    const double tau = 100.0;
+    scene::Interface iface;
+    mpm::MpmControls c = controls(8, 4);
+    c.stressQuadrature = quadrature;
+    SceneRun r(blockScene(0.0, 4.0, 1.0, 600.0, 1e5, iface), c, 1e7, false);
+    mpm::MaterialPoints& mp = r.points;
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.position);
+    auto sig = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mp.stress);
+    for (int p = 0; p < mp.count; ++p)
+    {
+        x(p, 1) *= squash;
+        for (int k = 0; k < 4; ++k) sig(p, k) = 0.0;
+        sig(p, 3) = tau;
+    }
+    Kokkos::deep_copy(mp.position, x);
+    Kokkos::deep_copy(mp.stress, sig);
+    const mpm::StepStatistics st = mpm::TimeIntegrator::statistics(mp, r.grid.rows);
+    EXPECT_TRUE(r.grid.fit(st.xmin, st.xmax, st.ymin, st.ymax, 1ull << 30));
+    r.grid.pressureSumsCurrent = false;
+    const double dt = 1.0;   // with v = 0 and a flat base, a node's x momentum is dt times its internal force
+    r.integrator.particleToGrid(mp, r.grid, dt);
+    auto nodal = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r.grid.nodal);
+    // The base's node row; columns two cells or more inside either end.
+    const int baseRow = -1 - r.grid.j0, d8 = 8;
+    double load = 0.0;
+    int columns = 0;
+    for (int i = 0; i < r.grid.ni; ++i)
+    {
+        const double xi = r.grid.xOrigin + (r.grid.i0 + i)*r.grid.d;
+        if (xi < 2.0*r.grid.d || xi > 4.0 - 2.0*r.grid.d) continue;
+        load += nodal(i, baseRow, mpm::BackgroundGrid::momentumX)/(dt*r.grid.d);
+        ++columns;
+    }
+    EXPECT_GT(columns, 4*d8 - 8);
+    return load/columns;
+}
+
+TEST(SlideMPM, CellCappedQuadratureWeighsACrowdedCellByItsArea)
+{
+    using Q = mpm::MpmControls::StressQuadrature;
+    const double full = baseLoadOfAShearStress(Q::particleVolume, 1.0);
+    const double fullCapped = baseLoadOfAShearStress(Q::cellCapped, 1.0);
+    const double crowded = baseLoadOfAShearStress(Q::particleVolume, 0.5);
+    const double crowdedCapped = baseLoadOfAShearStress(Q::cellCapped, 0.5);
+    std::printf("base load of a 100 Pa shear stress per unit length: full cells %.6f (capped %.6f) Pa, "
+                "cells holding twice their area %.6f (capped %.6f) Pa\n", full, fullCapped, crowded, crowdedCapped);
+    // The base's node's function falls off as (1 - s)^2 in the base cell: its
+    // slope 2(1 - s)/d weighs tau to tau per unit length, sign aside.
+    EXPECT_NEAR(std::fabs(full), 100.0, 1e-9*100.0);
+    EXPECT_NEAR(fullCapped, full, 1e-9*100.0);
+    EXPECT_NEAR(crowded, 2.0*full, 1e-9*100.0);
+    EXPECT_NEAR(crowdedCapped, full, 1e-9*100.0);
+}
+
 TEST(SlideMPM, NoMaterialThroughTheBase)
 {
     // A weak slide slumping down a 10 degree slope on each interface.
