@@ -40,7 +40,7 @@ def load(rel):
 
 def table1_results():
     """{case: {method: result dict}} at each method's Table 1 resolution (the finest stored for MPM and CFD
-    that covers most cases: H0/10; for MPM the finer cell of mpm/table1.py's FINE where a case needs one)."""
+    that covers most cases: H0/10; for MPM the finer set-up of mpm/table1.py's FINE where a case needs one)."""
     out = {c: {} for c in range(1, 14)}
     for r in load("dam/table1.json") or []:
         if r["case"] in out:
@@ -52,7 +52,7 @@ def table1_results():
         if "failed" in r and (r["cells"], r["ppc"]) == (10, 4):
             out[r["case"]]["MPM"] = {"failed": "`mpm/table1.md`"}
     mpm = [r for r in stored if "runout" in r]
-    # H0/10 with 4x4 first, then the finer cell of the cases that need one, which replaces it.
+    # H0/10 with 4x4 first, then the finer set-up of the cases that need one, which replaces it.
     for r in [r for r in mpm if (r["cells"], r["ppc"]) == (10, 4)] + \
              [r for r in mpm if MPM_FINE.get(r["case"]) == (r["cells"], r["ppc"])]:
         setup = "H0/%d, %dx%d" % (r["cells"], r["ppc"], r["ppc"])
@@ -122,8 +122,8 @@ def fmt_result(res, ref):
 def table1_section(results, paper):
     lines = ["### Table 1: the three methods against the paper", "",
              "Runout = travel of the front [m]; error against the paper's value for the same method. slideDAM: fast "
-             "setting (800 columns); slideMPM: cell H0/10, 4x4 particles (the paper's; where marked, a finer cell that "
-             "a mechanism needs, `mpm/table1.md`); slideFoam: H0/10 with H0/40 on the base (where marked, the "
+             "setting (800 columns); slideMPM: cell H0/10, 4x4 particles (the paper's; where marked, a finer cell or "
+             "more particles that a case needs, `mpm/table1.md`); slideFoam: H0/10 with H0/40 on the base (where marked, the "
              "mesh a case needs, `cfd/table1.md`), "
              "2 MPI ranks, run as long as slideDAM took. \"moving\": the run reached its end time with the front "
              "still moving faster than restVelocity.", "",
