@@ -21,21 +21,21 @@ The cell size and the base's angle are read from the case (mpmDict cellsPerHeigh
 import argparse
 import math
 import os
-import re
 import sys
 
 import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "lib"))
+from cfdcase import get_entry  # noqa: E402
 from slidefoam_io import particles_on_planar_base  # noqa: E402
 
 
-def entry(path, key):
-    m = re.search(r"^\s*" + key + r"\s+([^;\s]+)\s*;", open(path).read(), re.M)
-    if not m:
-        sys.exit("%s: no entry '%s'" % (path, key))
-    return m.group(1)
+def entry(path, key, why=""):
+    value = get_entry(path, key)
+    if value is None:
+        sys.exit("%s: no number '%s'%s" % (path, key, why))
+    return value
 
 
 def quadratic_bspline(u):
@@ -66,12 +66,10 @@ def main():
     ap.add_argument("--rows", action="store_true")
     args = ap.parse_args()
     scene = os.path.join(args.case, "constant", "sceneProperties")
-    if entry(scene, "profile") != "planar":
-        sys.exit("%s: profile: this check needs a planar base" % scene)
-    theta_deg = float(entry(scene, "angle"))
-    rho = float(entry(scene, "density"))
-    d = float(entry(scene, "height"))/float(entry(os.path.join(args.case, "system", "mpmDict"), "cellsPerHeight"))
-    g = float(entry(scene, "g"))
+    theta_deg = entry(scene, "angle", " (this check needs a planar base)")
+    rho = entry(scene, "density")
+    d = entry(scene, "height")/entry(os.path.join(args.case, "system", "mpmDict"), "cellsPerHeight")
+    g = entry(scene, "g")
     theta = math.radians(theta_deg)
 
     x, y, u, a = particles_on_planar_base(args.case, args.time, theta_deg)
