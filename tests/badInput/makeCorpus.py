@@ -296,6 +296,9 @@ add("cfd-ambient-relaxation-negative", "a negative relaxation time for the light
     cfd0[:-1] + ["ambientRelaxationTime -2;", ""], len(cfd0), "ambientRelaxationTime", "slideFoamCase")
 add("cfd-top-unknown", "a top slideFoamCase does not know (lid; it takes open or slip)", "system/cfdDict",
     cfd0[:-1] + ["top             lid;", ""], len(cfd0), "top", "slideFoamCase")
+add("mpm-shifting-level-set", "particle shifting over a base that cuts the grid (its nodes' fill is not known)",
+    "system/mpmDict", mpm0[:-1] + ["baseBoundary     levelSet;", "particleShifting 0.05;", ""], len(mpm0) + 1,
+    "particleShifting", "slideMPM")
 
 
 def main():

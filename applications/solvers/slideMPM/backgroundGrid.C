@@ -35,10 +35,10 @@ unsigned long long BackgroundGrid::bytesFor(const long long nNodes)
     const unsigned long long copies =
         nodeScatterIsAtomic ? 1ull : static_cast<unsigned long long>(ExecutionSpace().concurrency()) + 1ull;
     // Nodal components, averaging and pressure sums with their duplicates, the
-    // velocity; and the base's fill and the row above the base, 2 + 3 per
+    // velocity and the shift; and the base's fill and the row above the base, 2 + 3 per
     // column with duplicates, where a window (fit) has at least 6 rows.
     const unsigned long long n = static_cast<unsigned long long>(nNodes);
-    return 8ull*n*((nComponents + 2 + 2)*copies + 2) + 8ull*5ull*copies*(n/6 + 1);
+    return 8ull*n*((nComponents + 2 + 2)*copies + 2 + 2) + 8ull*5ull*copies*(n/6 + 1);
 }
 
 bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, unsigned long long maxBytes)
@@ -75,6 +75,7 @@ bool BackgroundGrid::fit(double xmin, double xmax, double ymin, double ymax, uns
     baseFillScatter = ColumnScatter(baseFill);
     rowAboveBase = ColumnField("rowAboveBase", ni, 3);
     rowAboveBaseScatter = ColumnScatter(rowAboveBase);
+    shift = NodeField("nodeShift", ni, nj, 2);
     return true;
 }
 

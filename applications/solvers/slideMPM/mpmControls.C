@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "stressQuadrature", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "stressQuadrature", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "particleShifting", "writeFields", "writeState",
                       "purgeState", "progressInterval"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -109,6 +109,17 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.maxParticleLength = d.getScalarInRange("maxParticleLength", 0.25, 100.0, true, true,
                                                  "particle domain length [cells] beyond which a particle is split");
     }
+    if (d.found("particleShifting"))
+    {
+        // Up to 0.25: the excess diffuses by about this many cells^2 a step, and
+        // the explicit step holds up to about 0.6 on the base's row (share 1/3).
+        c.particleShifting = d.getScalarInRange("particleShifting", 0.0, 0.25, true, true,
+                                                "particle shift per step and unit of excess fill gradient [cells]");
+        if (c.particleShifting > 0.0 && c.baseBoundary != BaseBoundary::fitted)
+        {
+            d.fail("particleShifting", "needs baseBoundary fitted (the fill of a node the base cuts is not known)");
+        }
+    }
     c.writeFields = d.getBool("writeFields", true);
     c.writeState = d.getBool("writeState", true);
     if (d.found("purgeState"))
@@ -161,6 +172,7 @@ std::string MpmControls::describe(const double cellSize) const
     }
     if (particleSplitting) os << ", particles split when longer than " << maxParticleLength << " cell(s)";
     else os << ", no particle splitting";
+    if (particleShifting > 0.0) os << ", particles shifted out of overfull nodes (" << particleShifting << " cell per step and unit of excess)";
     return os.str();
 }
 

@@ -648,6 +648,61 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
     return dissipated;
 }
 
+double seededShare(const int row, const int particlesPerCell)
+{
+    if (row < -1) return 0.0;
+    if (row > 0) return 1.0;
+    const int n = particlesPerCell;
+    double a = 0.0;
+    for (int k = 0; k < n; ++k)
+    {
+        const double s = (k + 0.5)/n;   // in the base cell, and s + 1 in the cell above it
+        a += (row == -1 ? (1.0 - s)*(1.0 - s) : 2.0*s - 1.5*s*s + 0.5*(1.0 - s)*(1.0 - s))/n;
+    }
+    return a;
+}
+
+void TimeIntegrator::shiftField(BackgroundGrid& grid) const
+{
+    // The nodes' excess fill e = max(m/(rho0 d^2 a) - 1, 0), a their
+    // seededShare. Only overfull nodes push: a free surface's or a front's
+    // nodes, part full, do not pull particles out.
+    const double shareBase = seededShare(-1, controls_.particlesPerCell);
+    const double shareAbove = seededShare(0, controls_.particlesPerCell);
+    const auto nodal = grid.nodal;
+    const auto S = grid.shift;
+    const int j0 = grid.j0, ni = grid.ni, nj = grid.nj;
+    const double fullMass = density_*grid.d*grid.d;
+    const double k = controls_.particleShifting*grid.d;   // [m] per unit of excess per cell
+    const RowShear rows = grid.rows;
+    const double xOrigin = grid.xOrigin, d = grid.d;
+    const int i0 = grid.i0;
+    auto excess = KOKKOS_LAMBDA(const int i, const int j)
+    {
+        if (i < 0 || i >= ni || j < 0 || j >= nj || j + j0 < -1) return 0.0;
+        const int row = j + j0;
+        const double share = row == -1 ? shareBase : row == 0 ? shareAbove : 1.0;
+        const double e = nodal(i, j, BackgroundGrid::mass)/(fullMass*share) - 1.0;
+        return e > 0.0 ? e : 0.0;
+    };
+    Kokkos::parallel_for("shiftField", Policy(0, ni*nj), KOKKOS_LAMBDA(const int n)
+    {
+        const int i = n/nj, j = n - i*nj, row = j + j0;
+        double gx = 0.0, gy = 0.0;
+        if (row >= -1)
+        {
+            gx = 0.5*(excess(i + 1, j) - excess(i - 1, j));
+            // Node rows at y = 0 (the base's), then (r + 1/2) d; the base's nodes
+            // do not shift across it.
+            if (row == 0) gy = (excess(i, j + 1) - excess(i, j - 1))/1.5;
+            else if (row > 0) gy = 0.5*(excess(i, j + 1) - excess(i, j - 1));
+            if (rows.on) gx -= rows.slope(xOrigin + (i0 + i)*d)*gy;
+        }
+        S(i, j, 0) = -k*gx;
+        S(i, j, 1) = -k*gy;
+    });
+}
+
 StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, BackgroundGrid& grid, const double dt) const
 {
     GridToParticle f;
@@ -706,6 +761,8 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     // the gaps are (a flow that folds its material fills them): capped there.
     const double maxLength = 2.0*splitting_.maxLength*grid.d;
     const BaseLevelSet level = frame_.level;
+    const bool shifting = fittedBase_ && controls_.particleShifting > 0.0;   // shiftField's
+    const auto nodeShift = grid.shift;
     Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
         const double Lp[4] = {L(p, 0), L(p, 1), L(p, 2), L(p, 3)};
@@ -735,8 +792,22 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         V(p) = Vn1;
         len(p, 0) = std::fmin(maxLength, len(p, 0)*UndrainedClay::stretchFactor(Lp[0]*dt));   // fmin: std::min is host-only under nvcc
         len(p, 1) = std::fmin(maxLength, len(p, 1)*UndrainedClay::stretchFactor(Lp[3]*dt));
-        const double xn = x(p, 0) + dt*v(p, 0);
+        double xn = x(p, 0) + dt*v(p, 0);
         double yn = x(p, 1) + dt*v(p, 1);
+        if (shifting)
+        {
+            // The nodes' shift where the particle took their velocity.
+            const Stencil st(x(p, 0), x(p, 1) - rows.height(x(p, 0)), xOrigin, invD, i0, j0, true);
+            for (int a = 0; a < 3; ++a)
+            {
+                for (int b = 0; b < 3; ++b)
+                {
+                    const double w = st.wx[a]*st.wy[b];
+                    xn += w*nodeShift(st.bx + a, st.by + b, 0);
+                    yn += w*nodeShift(st.bx + a, st.by + b, 1);
+                }
+            }
+        }
         // The grid's contact keeps nodes out of the base, but a particle near it
         // also takes velocity from nodes above that may still be descending:
         // its centre is put back on the base and its approach removed.
@@ -783,6 +854,7 @@ StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, co
 {
     particleToGrid(mp, grid, dt);
     const double boundaryWork = updateGrid(grid, dt);
+    if (fittedBase_ && controls_.particleShifting > 0.0) shiftField(grid);
     StepStatistics s = gridToParticle(mp, grid, dt);
     s.boundaryWork = boundaryWork;
     updateStress(mp, grid, dt, record);
