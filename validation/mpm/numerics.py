@@ -14,7 +14,8 @@ rate-free variants (below) ask how much of that fall is Eq. (1)'s rate term met 
 and rateFreeStiff, rateFreeUnscaled, rateFreeWithinCell and rateFreeNoSplitting how much of the rate-free MPM's
 shortfall against slideFoam and slideDAM is its elastic clay, the mass scaling of the grid row above the base, the
 base's contact or particle splitting, and the cellCapped variants how much is the particles crowding into the
-base's cell (README, open problem 13); --ppc sets the particles per cell and direction (2, 4, 6 and 8 were run).
+base's cell (README, open problem 13), and the shifted variants what particle shifting against that crowding changes
+(shifting.py has its study); --ppc sets the particles per cell and direction (2, 4, 6 and 8 were run).
 
 Usage: validation/mpm/numerics.py [--cases 2] [--cells 20,40] [--ppc 4] [--variants quadratic,stiff,...]
                                   [--end-time T] [--stored]
@@ -39,7 +40,12 @@ from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 # says why), with the quadratic transfer and with APIC; E = (100/1.5) s_uo keeps Case 1's 15 kPa (ten times that in
 # rateFreeStiff); rateFreeUnscaled turns off baseRowMassScaling, rateFreeWithinCell sets baseContact withinCell,
 # rateFreeNoSplitting turns off particleSplitting, rateFreeCellCapped (and cellCapped, on any case) sets stressQuadrature
-# cellCapped. The script refuses the rate-free ones on another case.
+# cellCapped, rateFreeShifted (and shifted, on any case) sets particleShifting SHIFT. The script refuses the rate-free
+# ones on another case.
+# mpmDict particleShifting of the shifted variants: the smallest of shifting.py's coefficients whose rate-free Case 1
+# runs alike at 2x2 and 4x4 particles (410.6 and 413.7 m at 40 s; 0.01 leaves 4x4 at 396.7 m, 0.1 parts 2x2 and 4x4
+# by 3 %: shifting.md).
+SHIFT = 0.03
 RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/CASE1_RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
 VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("quadratic", "quadratic transfer", {"transfer": "quadratic"}, None),
@@ -48,6 +54,7 @@ VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
                                                                     "youngsModulusRatio": 1000}, None),
             ("cellCapped", "APIC, stress quadrature capped at each cell's area", {"stressQuadrature": "cellCapped"},
              None),
+            ("shifted", "APIC, particle shifting %g" % SHIFT, {"particleShifting": SHIFT}, None),
             ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", RATE_FREE_CLAY, CASE1_RATE_FREE_SCENE),
             ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)",
              {"transfer": "quadratic", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
@@ -63,9 +70,11 @@ VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
              "model)", {"transfer": "quadratic", "particleSplitting": "no", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
             ("rateFreeCellCapped", "quadratic transfer, no rate effect, 1.5 s_uo, stress quadrature capped at each "
              "cell's area (another model)", {"transfer": "quadratic", "stressQuadrature": "cellCapped",
-                                             **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE))
+                                             **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
+            ("rateFreeShifted", "quadratic transfer, no rate effect, 1.5 s_uo, particle shifting %g (another model)"
+             % SHIFT, {"transfer": "quadratic", "particleShifting": SHIFT, **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE))
 RATE_FREE = ("rateFreeApic", "rateFree", "rateFreeStiff", "rateFreeUnscaled", "rateFreeWithinCell", "rateFreeNoSplitting",
-             "rateFreeCellCapped")
+             "rateFreeCellCapped", "rateFreeShifted")
 KEYS = [v[0] for v in VARIANTS]
 
 
