@@ -378,6 +378,25 @@ KOKKOS_INLINE_FUNCTION double columnBoundaryWork(const NodeField& nodal, const N
     return w;
 }
 
+// A node's excess fill for particle shifting (TimeIntegrator::shiftField):
+// max(m/(fullMass a) - 1, 0), a the row's seededShare; 0 outside the storage
+// and below the base's row.
+struct ExcessFill
+{
+    NodeField nodal;
+    int j0, ni, nj;
+    double fullMass, shareBase, shareAbove;
+
+    KOKKOS_INLINE_FUNCTION double operator()(const int i, const int j) const
+    {
+        if (i < 0 || i >= ni || j < 0 || j >= nj || j + j0 < -1) return 0.0;
+        const int row = j + j0;
+        const double share = row == -1 ? shareBase : row == 0 ? shareAbove : 1.0;
+        const double e = nodal(i, j, BackgroundGrid::mass)/(fullMass*share) - 1.0;
+        return e > 0.0 ? e : 0.0;
+    }
+};
+
 StepStatistics toStatistics(const double* r)
 {
     StepStatistics s;
@@ -677,14 +696,7 @@ void TimeIntegrator::shiftField(BackgroundGrid& grid) const
     const RowShear rows = grid.rows;
     const double xOrigin = grid.xOrigin, d = grid.d;
     const int i0 = grid.i0;
-    auto excess = KOKKOS_LAMBDA(const int i, const int j)
-    {
-        if (i < 0 || i >= ni || j < 0 || j >= nj || j + j0 < -1) return 0.0;
-        const int row = j + j0;
-        const double share = row == -1 ? shareBase : row == 0 ? shareAbove : 1.0;
-        const double e = nodal(i, j, BackgroundGrid::mass)/(fullMass*share) - 1.0;
-        return e > 0.0 ? e : 0.0;
-    };
+    const ExcessFill excess{nodal, j0, ni, nj, fullMass, shareBase, shareAbove};
     Kokkos::parallel_for("shiftField", Policy(0, ni*nj), KOKKOS_LAMBDA(const int n)
     {
         const int i = n/nj, j = n - i*nj, row = j + j0;
