@@ -84,6 +84,7 @@ def case_result(c, cells, ppc, d):
             "mech30": mechanism_at(s, 30.0),
             "baseContact": s.get("base_contact", "withinCell"),
             "baseRowMassScaling": s.get("base_row_mass_scaling"),
+            "particleShifting": s.get("particle_shifting", 0.0),
             "stressRate": s.get("stress_rate", "cauchy"),
             # The energy budget's remainder (gravity's work neither kinetic, elastic, plastic nor the boundary's),
             # as a share of gravity's work: what the discretisation lost.

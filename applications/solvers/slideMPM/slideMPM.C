@@ -304,6 +304,9 @@ int main(int argc, char** argv)
         // The choices a rerun must repeat to reproduce the runout (mpmDict's keys).
         summary.addBool("base_row_mass_scaling",
                         controls.baseBoundary == mpm::MpmControls::BaseBoundary::fitted && controls.baseRowMassScaling);
+        summary.addNumber("particle_shifting", controls.particleShifting);
+        summary.addString("stress_quadrature", controls.stressQuadrature == mpm::MpmControls::StressQuadrature::cellCapped
+                                               ? "cellCapped" : "particleVolume");
         summary.addNumber("courant", controls.courant);
         summary.addString("strain_rate", controls.strainRateWord());
         summary.addString("stress_rate", controls.stressRateWord());
