@@ -773,7 +773,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     // the gaps are (a flow that folds its material fills them): capped there.
     const double maxLength = 2.0*splitting_.maxLength*grid.d;
     const BaseLevelSet level = frame_.level;
-    const bool shifting = fittedBase_ && controls_.particleShifting > 0.0;   // shiftField's
+    const bool shifting = this->shifting();   // by shiftField's node shifts
     const auto nodeShift = grid.shift;
     Kokkos::parallel_for("updateStress", Policy(0, mp.count), KOKKOS_LAMBDA(const int p)
     {
@@ -866,7 +866,7 @@ StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, co
 {
     particleToGrid(mp, grid, dt);
     const double boundaryWork = updateGrid(grid, dt);
-    if (fittedBase_ && controls_.particleShifting > 0.0) shiftField(grid);
+    if (shifting()) shiftField(grid);
     StepStatistics s = gridToParticle(mp, grid, dt);
     s.boundaryWork = boundaryWork;
     updateStress(mp, grid, dt, record);
