@@ -18,21 +18,23 @@ base's cell (README, open problem 13), and the shifted variants what particle sh
 (shifting.py has its study); --ppc sets the particles per cell and direction (2, 4, 6 and 8 were run).
 
 Usage: validation/mpm/numerics.py [--cases 2] [--cells 20,40] [--ppc 4] [--variants quadratic,stiff,...]
-                                  [--end-time T] [--stored]
+                                  [--end-time T] [--stored] [--import DIR ...]
 (4x4 with the quadratic transfer on 2 cores: Case 2 5 minutes at H0/20 and 34 minutes at H0/40, Case 1 7 minutes
 at H0/20 and 29 minutes at H0/40 to 40 s, rate-free 3 and 18 minutes; the stiff variants take about three times
 the steps; a run keeps the stored results of the other cases, cells and variants; --end-time stops the runs at T s,
-to set a run beside a Table 1 row that was stopped there)"""
+to set a run beside a Table 1 row that was stopped there; --import stores finished run directories named
+case<NN>_h<cells>_p<ppc>_<variant>, as this script names them, instead of running)"""
 import argparse
 import json
 import os
+import re
 import shutil
 import sys
 import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
-from table1 import cauchy_rate, run_case, paper_table  # noqa: E402
+from table1 import cauchy_rate, case_result, run_case, paper_table  # noqa: E402
 from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 
 # (key, heading, mpmDict entries, sceneProperties entries); "apic" is table1.json's row, the default numerics.
@@ -85,6 +87,31 @@ def table1_row(table1, case, cells, ppc):
     return rows[-1] if rows else None
 
 
+def row_of(res, key):
+    """numerics.json's row of a run of variant `key` (run_case's or case_result's dict)."""
+    res["variant"] = key
+    history = res.pop("history", None) or []
+    # The front at the times the README compares meshes at (the history itself is too long to store).
+    res["frontAt"] = {"%g" % t: next((h[1] for h in history if h[0] >= t - 1e-9), None) for t in (10, 20, 25, 30)}
+    return res
+
+
+def imported(d):
+    """The row of a finished run directory case<NN>_h<cells>_p<ppc>_<variant>."""
+    m = re.search(r"case(\d+)_h(\d+)_p(\d+)_(\w+)$", d.rstrip("/"))
+    if not m or m.group(4) not in KEYS[1:]:
+        raise SystemExit("numerics.py: --import %s: not a run directory case<NN>_h<cells>_p<ppc>_<variant> "
+                         "(variants: %s)" % (d, ", ".join(KEYS[1:])))
+    if m.group(4) in RATE_FREE and int(m.group(1)) != 1:
+        raise SystemExit("numerics.py: --import %s: a rate-free variant of Case 1 only" % d)
+    row = case_result(int(m.group(1)), int(m.group(2)), int(m.group(3)), d)
+    shift = {v[0]: v[2] for v in VARIANTS}[m.group(4)] or {}
+    if row["particleShifting"] != shift.get("particleShifting", 0.0):
+        raise SystemExit("numerics.py: --import %s: particleShifting %g where the variant %s has %g"
+                         % (d, row["particleShifting"], m.group(4), shift.get("particleShifting", 0.0)))
+    return row_of(row, m.group(4))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cases", default="2")
@@ -93,6 +120,8 @@ def main():
     ap.add_argument("--variants", default="quadratic,stiff,quadraticStiff")
     ap.add_argument("--stored", action="store_true", help="rewrite numerics.md from numerics.json without running")
     ap.add_argument("--end-time", type=float, default=None, help="stop the runs at this time [s]")
+    ap.add_argument("--import", dest="imports", nargs="*", default=[],
+                    help="finished run directories case<NN>_h<cells>_p<ppc>_<variant> to store instead of running")
     args = ap.parse_args()
     cells = [int(x) for x in args.cells.split(",")]
     wanted = args.variants.split(",")
@@ -106,24 +135,22 @@ def main():
     path = os.path.join(here, "numerics.json")
     stored = json.load(open(path)) if os.path.isfile(path) else []
     results = []
-    if not args.stored:
+    if args.imports:
+        results = [imported(d) for d in args.imports]
+    elif not args.stored:
         work = tempfile.mkdtemp(prefix="slideMPM_numerics_")
         for case, n, (key, _, numerics, scene) in [(c, n, v) for c in [int(x) for x in args.cases.split(",")]
                                              for n in cells for v in VARIANTS if v[0] in wanted]:
             res = run_case(case, n, args.ppc, work, numerics=numerics, scene=scene, tag="_" + key,
                            end_time=args.end_time)
-            res["variant"] = key
-            history = res.pop("history", None) or []
-            # The front at the times the README compares meshes at (the history itself is too long to store).
-            res["frontAt"] = {"%g" % t: next((h[1] for h in history if h[0] >= t - 1e-9), None)
-                              for t in (10, 20, 25, 30)}
-            results.append(res)
+            results.append(row_of(res, key))
             print("case %d H0/%d %s: %s" % (case, n, key, "FAILED" if "failed" in res else
                                             "%.2f m, %s, %.0f s wall" % (
                                                 res["runout"], "at rest by %.1f s" % res["endTime"]
                                                 if res["atRest"] else "moving at %g s" % res["endTime"],
                                                 res["wall"])), flush=True)
         shutil.rmtree(work, ignore_errors=True)
+    if not args.stored:
         new = {(r["case"], r["cells"], r["ppc"], r["variant"]) for r in results}
         results = [r for r in stored if (r["case"], r["cells"], r["ppc"], r["variant"]) not in new] + results
         results.sort(key=lambda r: (r["case"], r["ppc"], r["cells"], KEYS.index(r["variant"])))
