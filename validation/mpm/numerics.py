@@ -104,11 +104,18 @@ def imported(d):
                          "(variants: %s)" % (d, ", ".join(KEYS[1:])))
     if m.group(4) in RATE_FREE and int(m.group(1)) != 1:
         raise SystemExit("numerics.py: --import %s: a rate-free variant of Case 1 only" % d)
+    _, _, numerics, scene = VARIANTS[KEYS.index(m.group(4))]
+    # The variant's entries as run_case writes them (`key value;`), so a run of other numerics is not stored as it.
+    for name, entries in (("system/mpmDict", numerics), ("constant/sceneProperties", scene)):
+        text = open(os.path.join(d, name)).read()
+        for k, v in (entries or {}).items():
+            if not re.search(r"^\s*%s\s+%s\s*;" % (re.escape(k), re.escape(str(v))), text, re.M):
+                raise SystemExit("numerics.py: --import %s: %s has no '%s %s;' of the variant %s"
+                                 % (d, name, k, v, m.group(4)))
     row = case_result(int(m.group(1)), int(m.group(2)), int(m.group(3)), d)
-    shift = {v[0]: v[2] for v in VARIANTS}[m.group(4)] or {}
-    if row["particleShifting"] != shift.get("particleShifting", 0.0):
-        raise SystemExit("numerics.py: --import %s: particleShifting %g where the variant %s has %g"
-                         % (d, row["particleShifting"], m.group(4), shift.get("particleShifting", 0.0)))
+    if "particleShifting" not in (numerics or {}) and row["particleShifting"] != 0.0:
+        raise SystemExit("numerics.py: --import %s: run with particleShifting %g, the variant %s without"
+                         % (d, row["particleShifting"], m.group(4)))
     return row_of(row, m.group(4))
 
 
