@@ -305,8 +305,7 @@ int main(int argc, char** argv)
         summary.addBool("base_row_mass_scaling",
                         controls.baseBoundary == mpm::MpmControls::BaseBoundary::fitted && controls.baseRowMassScaling);
         summary.addNumber("particle_shifting", controls.particleShifting);
-        summary.addString("stress_quadrature", controls.stressQuadrature == mpm::MpmControls::StressQuadrature::cellCapped
-                                               ? "cellCapped" : "particleVolume");
+        summary.addString("stress_quadrature", controls.stressQuadratureWord());
         summary.addNumber("courant", controls.courant);
         summary.addString("strain_rate", controls.strainRateWord());
         summary.addString("stress_rate", controls.stressRateWord());
