@@ -34,7 +34,7 @@ import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
-from table1 import cauchy_rate, case_result, run_case, paper_table  # noqa: E402
+from table1 import cauchy_rate, case_result, front_at, run_case, paper_table  # noqa: E402
 from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 
 # (key, heading, mpmDict entries, sceneProperties entries); "apic" is table1.json's row, the default numerics.
@@ -92,7 +92,7 @@ def row_of(res, key):
     res["variant"] = key
     history = res.pop("history", None) or []
     # The front at the times the README compares meshes at (the history itself is too long to store).
-    res["frontAt"] = {"%g" % t: next((h[1] for h in history if h[0] >= t - 1e-9), None) for t in (10, 20, 25, 30)}
+    res["frontAt"] = front_at(history, (10, 20, 25, 30))
     return res
 
 

@@ -24,7 +24,7 @@ import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
-from table1 import run_case, case_result  # noqa: E402
+from table1 import run_case, case_result, front_at  # noqa: E402
 from numerics import RATE_FREE_CLAY  # noqa: E402
 from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 
@@ -41,7 +41,7 @@ def numerics_of(shift):
 def row_of(res, shift):
     history = res.pop("history", None) or []
     res["shift"] = shift
-    res["frontAt"] = {"%g" % t: next((h[1] for h in history if h[0] >= t - 1e-9), None) for t in (10, 20, 30)}
+    res["frontAt"] = front_at(history, (10, 20, 30))
     return res
 
 

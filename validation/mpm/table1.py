@@ -24,7 +24,7 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from slidefoam_io import mechanism_at, read_summary, read_runout  # noqa: E402
+from slidefoam_io import front_at as front_of, mechanism_at, read_summary, read_runout  # noqa: E402
 from runner import which  # noqa: E402
 from paper import paper_table  # noqa: E402
 from cfdcase import get_entry, run, set_entry, set_method_entries  # noqa: E402
@@ -95,6 +95,12 @@ def case_result(c, cells, ppc, d):
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
             "maxVelocity": float(r["maxVelocity"][-1]),
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}
+
+
+def front_at(history, times):
+    """The front at each of `times` from a row's history ([time, front, front speed] per write), None past the
+    run's end; keyed "%g" as the rows store it."""
+    return {"%g" % t: front_of([h[:2] for h in history], t) for t in times}
 
 
 def legs_run(d):
