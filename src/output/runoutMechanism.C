@@ -195,10 +195,13 @@ Mechanism detectMechanism(const std::vector<MaterialSample>& samples, const Mech
         }
         if (m.horsts < 2) m.horsts = 0;
     }
+    // Speeds and strains below these are nil: a ratio over round-off (an advected
+    // xi of 1e-320 in a plug) would overflow, and trap where FPEs do (OpenFOAM).
+    const double nilSpeed = 1e-12, nilStrain = 1e-9;
     const double V = M > 0.0 ? P/M : 0.0;
-    m.basalSlipRatio = (Mb > 0.0 && V != 0.0) ? (Pb/Mb)/V : 0.0;
+    m.basalSlipRatio = (Mb > 0.0 && std::fabs(V) > nilSpeed) ? (Pb/Mb)/V : 0.0;
     const double xb = median(xiBase), xr = median(xiBody);
-    m.basalStrainRatio = xr > 0.0 ? xb/xr : (xb > 0.0 ? 1e9 : 1.0);
+    m.basalStrainRatio = xr > nilStrain ? xb/xr : (xb > nilStrain ? 1e9 : 1.0);
     m.shearBand = (xb > 0.5 && m.basalStrainRatio > 3.0) ? shearBandNames()[0]
                 : (m.grabens > 0 || m.horsts > 0 ? shearBandNames()[1] : shearBandNames()[2]);
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cfenv>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -188,6 +189,27 @@ TEST(RunoutMechanism, CellsVoteByVolume)
 TEST(RunoutMechanism, NothingToLookAt)
 {
     EXPECT_EQ(detectMechanism({}, view(), clay()).name, "none");
+}
+
+// Round-off in a plug (an advected xi of 1e-320, a mean speed of 1e-300) is
+// nothing to divide by: the ratios stay finite with overflow trapped, as
+// OpenFOAM traps it (a sheared layer under a plug stopped slideFoam so).
+TEST(RunoutMechanism, RoundOffIsNil)
+{
+    std::vector<MaterialSample> layer;
+    addMaterial(layer, 0.0, 1.0, flat(0.65), uniform(0.03), [](double, double h) { return h < 0.2 ? 1.0 : 1e-320; });
+    std::vector<MaterialSample> still;
+    addMaterial(still, 0.0, 1.0, flat(0.65), uniform(1e-300), uniform(0.0));
+    const int before = fegetexcept();
+    feenableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    const Mechanism sheared = detectMechanism(layer, view(), clay(false));
+    const Mechanism resting = detectMechanism(still, view(), clay(false));
+    fedisableexcept(FE_ALL_EXCEPT);
+    feenableexcept(before);
+    EXPECT_EQ(sheared.basalStrainRatio, 1e9);
+    EXPECT_EQ(sheared.shearBand, "along the base");
+    EXPECT_EQ(resting.basalSlipRatio, 0.0);
+    EXPECT_EQ(resting.name, "viscous elongation");
 }
 
 TEST(RunoutMechanism, LogRoundTripAndRestart)
