@@ -122,7 +122,9 @@ def read_field(case, time, name):
         n = int(m.group(2))
         body = text[m.end():]
         if m.group(1) == "vector":
-            vals = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
+            # A list of up to ten is written on one line: "4((x y z) ... );"
+            end = body.index("\n)") if "\n)" in body[:body.index(";")] else body.index(");")
+            vals = re.findall(r"\(([^()]*)\)", body[:end])
             return np.array([[float(x) for x in v.split()] for v in vals[:n]])
         return np.array([float(x) for x in body[:body.index(")")].split()[:n]])
     m = re.search(r"internalField\s+uniform\s+(\([^)]*\)|[^;]+);", text)

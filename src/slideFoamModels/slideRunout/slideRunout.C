@@ -2,6 +2,7 @@
 #include "slideSceneObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Pstream.H"
+#include "cyclicPolyPatch.H"
 
 #include <algorithm>
 #include <numeric>
@@ -343,10 +344,13 @@ bool Foam::functionObjects::slideRunout::execute()
     }
     // Slide on the base in the last column is leaving through the open downslope
     // end, whether or not the (thin) front there still reaches alpha = 0.5.
-    s.atDomainEnd = nCol > 0 && baseAlpha[nCol - 1] >= 0.1;
+    // Ends made cyclic (an infinite layer, validation/cfd/rateLayer.py) lose nothing.
+    const label downi = mesh_.boundaryMesh().findPatchID("downslope");
+    const bool periodic = downi >= 0 && isA<cyclicPolyPatch>(mesh_.boundaryMesh()[downi]);
+    s.atDomainEnd = !periodic && nCol > 0 && baseAlpha[nCol - 1] >= 0.1;
     // The same at the open upslope end: a weak slide's rear spreads upslope too
     // (Table 1 Case 4's by 50 m in 5 s), beyond slideDAM's spreading that sized the mesh.
-    s.atUpslopeEnd = !scene_.slide.rearWall && nCol > 0 && baseAlpha[0] >= 0.1;
+    s.atUpslopeEnd = !periodic && !scene_.slide.rearWall && nCol > 0 && baseAlpha[0] >= 0.1;
     // Slide at the open top (a mesh too low over it) would leave there or be pressed down.
     const label topi = mesh_.boundaryMesh().findPatchID("top");
     if (topi >= 0)

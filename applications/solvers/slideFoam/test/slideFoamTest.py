@@ -40,6 +40,12 @@ generated from SlideFoam scenes by slideFoamCase:
               vortex in the light ambient under a lid decays by the implicit Euler
               factor 1/(1 + dt/tau) per step against the same vortex undamped, and
               the flume's slurry runs as it does undamped
+  layer       an infinite layer (one column, cyclic ends, the along-slope weight as
+              the alongSlopeGravity fvOption) in steady flow on a no-slip base
+              against its exact profile with slideFoam's viscosity cap: a Bingham
+              layer, and Table 1 Case 1's Eq. (1) layer, which converges once the
+              cells are thinner than the rate's decay length above the base and runs
+              fast where they are thicker (validation/cfd/rateLayer.py)
   reconstruction  slideFoam's flux reconstruction returns a uniform velocity from
               its face fluxes to round-off on a mesh rotated 3.43 deg (fvc::reconstruct
               of Debian's v1912 build does not: fluxReconstruction.H) and on the
@@ -748,6 +754,34 @@ def test_ambientDamping(work):
 
 
 FOAM_HEADER = "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n    object %s;\n}\n"
+
+
+def test_layer(work):
+    sys.path.insert(0, os.path.join(top, "validation", "cfd"))
+    import rateLayer  # noqa: E402
+    # The Bingham layer converges at about order 1.4 (-4.4, -1.7, -0.6, -0.2 % on 16 to 128 cells), Case 1's
+    # from 64 cells on at about first order (-2.5, -1.2, -0.4 % on 64 to 256), after overshooting on coarser ones.
+    h = 0.65
+    bingham = {"s_uo": 100, "eta": 0.06, "n": 1, "gdotRef": 0.06}   # plastic viscosity 100 Pa s
+    cases = [("Bingham (s_uo 100 Pa, 100 Pa s)", bingham, 64, 0.01),
+             ("Case 1's Eq. (1), cells l/3.3", None, 128, 0.02)]
+    for what, material, cells, tol in cases:
+        r = rateLayer.run_layer(h, cells, 20.0, work, material=material, name="layer_%d" % cells)
+        s = rateLayer.summarise(r, rateLayer.exact(h, r["rho_ambient"], material))
+        err = s["plug"]/s["capped_plug"] - 1
+        check(abs(err) < tol, "%s layer %g m deep, %d cells: plug %.5g m/s against the capped exact %.5g m/s (%+.2f %%, "
+              "within %g %%)" % (what, h, cells, s["plug"], s["capped_plug"], 100*err, 100*tol))
+        steady = s["plugs"][-1][1]/s["plugs"][-2][1] - 1
+        check(abs(steady) < 1e-3, "%s: steady by 15 s (plug %+.2g %% from 15 to 20 s)" % (what, 100*steady))
+        check(s["rms_error"] < tol*s["capped_plug"], "%s: RMS profile error %.3g of the plug (< %g)"
+              % (what, s["rms_error"]/s["capped_plug"], tol))
+    # Cells four times thicker than the rate's decay length l = 3.4 cm average the rate where it varies by e^1.2:
+    # the layer runs fast (+22 % measured).
+    r = rateLayer.run_layer(h, 16, 20.0, work, name="layer_16")
+    s = rateLayer.summarise(r, rateLayer.exact(h, r["rho_ambient"]))
+    err = s["plug"]/s["capped_plug"] - 1
+    check(err > 0.1, "Case 1's Eq. (1) layer on 16 cells (cell/l = %.1f): plug %+.1f %% against the capped exact "
+          "(> +10 %%: a coarse wall cell runs fast)" % (s["cell_over_l"], 100*err))
 
 
 def test_reconstruction(work):
