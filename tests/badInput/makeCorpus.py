@@ -299,6 +299,9 @@ add("cfd-top-unknown", "a top slideFoamCase does not know (lid; it takes open or
 add("mpm-shifting-level-set", "particle shifting over a base that cuts the grid (its nodes' fill is not known)",
     "system/mpmDict", mpm0[:-1] + ["baseBoundary     levelSet;", "particleShifting 0.05;", ""], len(mpm0) + 1,
     "particleShifting", "slideMPM")
+add("cfd-wall-function-papanastasiou", "Eq. (1)'s wall function with the Papanastasiou regularisation (it follows the "
+    "capped profile)", "system/cfdDict", cfd0[:-1] + ["regularisation  papanastasiou;", "rateWallFunction yes;", ""],
+    len(cfd0) + 1, "rateWallFunction", "slideFoamCase")
 
 
 def main():

@@ -7,7 +7,8 @@ against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
                                  [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
-                                 [--max-co 0.25] [--xi-per-cell] [--rate-free] [--top slip] [--reach 1600] [--end-time 100]
+                                 [--max-co 0.25] [--xi-per-cell] [--rate-free] [--wall-function] [--top slip]
+                                 [--reach 1600] [--end-time 100]
                                  [--replot] [--continue CASE_DIR --end-time 200]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
 import argparse
@@ -35,14 +36,16 @@ def fatal_error(log):
 
 def counting(r):
     """", xi per cell" for a row whose xi counted each cell's strain (--xi-per-cell), ", no rate effect" for Case 1
-    without Eq. (1)'s rate term (--rate-free), else ""."""
-    return (", xi per cell" if r.get("xi_per_cell") else "") + (", no rate effect" if r.get("rate_free") else "")
+    without Eq. (1)'s rate term (--rate-free), ", Eq. (1)'s wall function on the base" (--wall-function), else ""."""
+    return ((", xi per cell" if r.get("xi_per_cell") else "") + (", no rate effect" if r.get("rate_free") else "")
+            + (", Eq. (1)'s wall function on the base" if r.get("wall_function") else ""))
 
 
 def case_name(c, cells, mesh):
     """The work directory's name of a run: caseNN_H0_n with what the row's key adds (--continue reads it back)."""
-    return "case%02d_H0_%d%s%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else "",
-                                   "_rateFree" if mesh.get("rate_free") else "")
+    return "case%02d_H0_%d%s%s%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else "",
+                                     "_rateFree" if mesh.get("rate_free") else "",
+                                     "_wallFunction" if mesh.get("wall_function") else "")
 
 
 # Mesh and run options passed to cfdDict as numbers: (option and row key, cfdDict entry, help).
@@ -76,6 +79,8 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
         cfd["shearBandThickness"] = 0
     if mesh.get("top"):
         cfd["top"] = mesh["top"]
+    if mesh.get("wall_function"):
+        cfd["rateWallFunction"] = "yes"
     for key, entry, _ in CFD_ENTRIES:
         if mesh.get(key) is not None:
             cfd[entry] = "%.6g" % mesh[key]
@@ -138,7 +143,8 @@ def case_row(c, cells, d, dam_runout, mesh):
 
 def row_key(r):
     # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
-    return r["case"], r["cells"], base_cells(r), bool(r.get("xi_per_cell")), bool(r.get("rate_free"))
+    return (r["case"], r["cells"], base_cells(r), bool(r.get("xi_per_cell")), bool(r.get("rate_free")),
+            bool(r.get("wall_function")))
 
 
 def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
@@ -148,11 +154,11 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from). ambient_relaxation:
     the light ambient relaxes to rest on this time scale [s] from the leg's start on (cfdDict ambientRelaxationTime
     and the constant/fvOptions slideFoamCase writes for it)."""
-    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?(_rateFree)?$", os.path.basename(os.path.normpath(d)))
+    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?(_rateFree)?(_wallFunction)?$", os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
     key = row_key({"case": int(m.group(1)), "cells": int(m.group(2)), "xi_per_cell": bool(m.group(3)),
-                   "rate_free": bool(m.group(4)),
+                   "rate_free": bool(m.group(4)), "wall_function": bool(m.group(5)),
                    "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)})
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
@@ -200,7 +206,7 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
         s = read_summary(summary)
     legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
-    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "rate_free", "top",
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "rate_free", "wall_function", "top",
                                     "ambient_relaxation_steps"]
             + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
@@ -236,6 +242,9 @@ def main():
     ap.add_argument("--rate-free", action="store_true",
                     help="Case 1 without Eq. (1)'s rate term (eta 0, s_uo 225 Pa; validation/lib/paper.py): how "
                     "much of the runout's dependence on the cells is the rate term's")
+    ap.add_argument("--wall-function", action="store_true",
+                    help="cfdDict rateWallFunction yes: the no-slip base's stress from Eq. (1)'s profile through the "
+                    "wall cell (validation/cfd/rateLayer.md)")
     ap.add_argument("--top", choices=["open", "slip"], default=None,
                     help="the mesh's top (cfdDict top; default open): slip closes it with a lid that keeps the spray "
                     "a fast thin head throws into the light ambient (Case 4) in the domain")
@@ -262,7 +271,8 @@ def main():
     for c in cases:
         for n in cells:
             mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES}, refinement=args.base_refinement,
-                        max_co=args.max_co, xi_per_cell=args.xi_per_cell, rate_free=args.rate_free, top=args.top)
+                        max_co=args.max_co, xi_per_cell=args.xi_per_cell, rate_free=args.rate_free, top=args.top,
+                        wall_function=args.wall_function)
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)

@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
-                      "pressureCoupling", "conservePlugMomentum", "shearBandThickness",
+                      "pressureCoupling", "conservePlugMomentum", "shearBandThickness", "rateWallFunction",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -71,6 +71,12 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
         c.pressureCoupling = d.getWordOneOf("pressureCoupling", {"simplec", "piso"});
     }
     c.conservePlugMomentum = d.getBool("conservePlugMomentum", false);
+    c.rateWallFunction = d.getBool("rateWallFunction", false);
+    if (c.rateWallFunction && c.regularisation != "cap")
+    {
+        d.fail("rateWallFunction", "the wall function follows Eq. (1)'s profile under the viscosity cap: it needs"
+               " regularisation cap, got " + c.regularisation);
+    }
     if (d.found("plugCreepRate"))
     {
         c.plugCreepRate = d.getScalarInRange("plugCreepRate", 0.0, 1e3, false, true, "plug creep rate [1/s]");
@@ -114,6 +120,7 @@ std::string CfdControls::describe() const
     if (ambientRelaxationTime > 0.0) os << ", ambient relaxed to rest in " << ambientRelaxationTime << " s";
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
+       << (rateWallFunction ? ", Eq. (1)'s wall function on the base" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;
     if (shearBandThickness > 0.0) os << ", xi counts shear bands " << shearBandThickness << " m thick";
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";

@@ -267,6 +267,7 @@ int main(int argc, char** argv)
                << (c.shearBandThickness > 0.0
                    ? "        shearBandThickness " + num(c.shearBandThickness) + ";   // cfdDict: xi per band this thick\n"
                    : "")
+               << (c.rateWallFunction ? "        baseWallFunction yes;   // cfdDict rateWallFunction\n" : "")
                << "    }\n"
                << "    rho             " << num(rhoSlide) << ";\n}\n\n"
                << "ambient\n{\n    transportModel  Newtonian;\n    nu              "

@@ -4,6 +4,7 @@
 #include "basalResistance.H"
 #include "bingShapeFactors.H"
 #include "checkParameters.H"
+#include "wallLayer.H"
 
 #include <gtest/gtest.h>
 
@@ -369,3 +370,87 @@ TEST(ReturnStrength, MeetsEq1AtThePlasticRate)
         }
     }
 }
+
+
+// Eq. (1)'s flow next to a wall (wallLayer.H) on Table 1 Case 1's material:
+// the closed-form speed against a quadrature of the capped model's rate, the
+// whole steady layer against its exact plug speed, and the inverse.
+namespace
+{
+
+HerschelBulkleyRemoulding case1()
+{
+    HerschelBulkleyRemoulding m;
+    m.s_uo = 150.0;
+    m.eta = 0.35;
+    m.n = 0.15;
+    m.gdotRef = 0.06;
+    return m;
+}
+
+} // namespace
+
+TEST(WallLayer, SpeedIsTheIntegralOfTheCappedRate)
+{
+    const HerschelBulkleyRemoulding m = case1();
+    const double muMax = 47574.46101, k = 600.0*9.81*std::sin(3.43*M_PI/180.0);
+    ViscosityRegularisation reg;
+    reg.muMax = muMax;
+    const double tauCap = capStress(m, 0.0, muMax);
+    // At the cap stress the two branches give one rate.
+    EXPECT_NEAR(m.strength(tauCap/muMax, 0.0), tauCap, 1e-9*tauCap);
+    // The rate as the model gives it: the g solving apparentViscosity(g) g = tau.
+    auto rate = [&](double tau)
+    {
+        if (tau <= tauCap) return tau/muMax;
+        double lo = tauCap/muMax, hi = 1e6;
+        for (int it = 0; it < 200; ++it)
+        {
+            const double mid = std::sqrt(lo*hi);
+            (apparentViscosity(m, mid, 0.0, reg)*mid < tau ? lo : hi) = mid;
+        }
+        return std::sqrt(lo*hi);
+    };
+    for (const double tauWall : {100.0, 190.0, 228.9, 300.0})
+    {
+        for (const double z : {0.005, 0.02, 0.1})
+        {
+            const double quad = simpson([&](double zz) { return rate(std::fmax(tauWall - k*zz, 0.0)); }, z, 20000);
+            EXPECT_NEAR(wallLayerSpeed(m, 0.0, muMax, tauWall, k, z), quad, 1e-6*quad + 1e-15)
+                << "tauWall " << tauWall << " z " << z;
+        }
+    }
+    // No gradient: the rate at the wall stress times z.
+    EXPECT_NEAR(wallLayerSpeed(m, 0.0, muMax, 228.9, 0.0, 0.01), rate(228.9)*0.01, 1e-9);
+}
+
+TEST(WallLayer, WholeSteadyLayerIsEq1sPlug)
+{
+    // Over the whole depth h (tauWall = k h) with a cap too high to creep, the speed
+    // at the surface is the exact plug speed gdot_ref s_uo/k eta^(-1/n) n/(n+1) x_b^((n+1)/n).
+    const HerschelBulkleyRemoulding m = case1();
+    const double k = 599.0*9.81*std::sin(3.43*M_PI/180.0), h = 0.65;
+    const double xb = k*h/m.s_uo - 1.0, e = (m.n + 1.0)/m.n;
+    const double plug = m.gdotRef*m.s_uo/k*std::pow(m.eta, -1.0/m.n)/e*std::pow(xb, e);
+    EXPECT_NEAR(wallLayerSpeed(m, 0.0, 1e30, k*h, k, h), plug, 1e-9*plug);
+    EXPECT_NEAR(plug, 0.02558, 5e-5);   // validation/cfd/rateLayer.md's exact plug
+}
+
+TEST(WallLayer, StressInvertsSpeed)
+{
+    const HerschelBulkleyRemoulding m = case1();
+    const double muMax = 47574.46101, k = 352.0;
+    for (const double tauWall : {50.0, 160.0, 228.9, 400.0})
+    {
+        for (const double z : {0.003, 0.05})
+        {
+            const double u = wallLayerSpeed(m, 0.0, muMax, tauWall, k, z);
+            EXPECT_NEAR(wallLayerStress(m, 0.0, muMax, u, k, z), tauWall, 1e-8*tauWall);
+        }
+    }
+    EXPECT_EQ(wallLayerStress(m, 0.0, muMax, 0.0, k, 0.01), 0.0);
+    // A thin cell sees no gradient: the wall stress is Eq. (1)'s strength at u/z.
+    const double g = 0.9, z = 1e-6;
+    EXPECT_NEAR(wallLayerStress(m, 0.0, muMax, g*z, k, z), m.strength(g, 0.0), 1e-3);
+}
+

@@ -1,5 +1,6 @@
 #include "slideRheology.H"
 #include "slideSceneObject.H"
+#include "wallLayer.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -44,6 +45,14 @@ void Foam::viscosityModels::slideRheology::readCoeffs()
         FatalIOErrorInFunction(coeffs_)
             << "key 'regularisation': expected cap or papanastasiou, got " << type
             << exit(FatalIOError);
+    }
+
+    baseWallFunction_ = coeffs_.getOrDefault<bool>("baseWallFunction", false);
+    if (baseWallFunction_ && (regularisation_.type != slide::rheology::Regularisation::cap || material_.eta <= 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "key 'baseWallFunction': the wall function follows Eq. (1)'s rate profile under the viscosity cap;"
+            << " it needs regularisation cap and a rate effect (eta > 0)" << exit(FatalIOError);
     }
 
     shearBandThickness_ = coeffs_.getOrDefault<scalar>("shearBandThickness", 0);
@@ -102,6 +111,36 @@ Foam::viscosityModels::slideRheology::shearBandStrainFactor() const
 }
 
 
+void Foam::viscosityModels::slideRheology::baseWallViscosity(const label patchi, scalarField& nup) const
+{
+    // The wall stress tau_w at which Eq. (1)'s profile under the stress tau_w - k z
+    // (k: the slide's weight along the base per unit volume, the stress gradient of
+    // a steady layer) reaches the wall cell's tangential speed at its centre; the
+    // face's viscosity then carries tau_w through the one-sided gradient u_P/z_P.
+    const fvPatch& patch = U_.mesh().boundary()[patchi];
+    const slide::scene::Scene& scene = slideSceneObject::New(U_.db());
+    const scalar theta = scene.base.isPlanar() ? scene.base.angle(0.0) : 0.0;
+    // Planar meshes lie in the slope's frame (x downslope, y normal), polylines in the global one.
+    const vector g = scene.g*vector(std::sin(theta), -std::cos(theta), 0);
+    const vectorField nf(patch.nf());
+    const scalarField& deltaCoeffs = patch.deltaCoeffs();
+    const labelUList& cells = patch.faceCells();
+    const volScalarField* xiPtr = U_.db().cfindObject<volScalarField>("xi");
+    const scalar rho = rho_.value(), muMax = regularisation_.muMax;
+    forAll(nup, facei)
+    {
+        const vector& n = nf[facei];
+        const vector Up = U_[cells[facei]];
+        const scalar u = mag(Up - (Up & n)*n);
+        const scalar z = 1/deltaCoeffs[facei];
+        const scalar k = rho*mag(g - (g & n)*n);
+        const scalar xi = xiPtr ? (*xiPtr)[cells[facei]] : 0.0;
+        const scalar tauWall = slide::rheology::wallLayerStress(material_, xi, muMax, u, k, z);
+        nup[facei] = (u > VSMALL ? min(tauWall*z/u, muMax) : muMax)/rho;
+    }
+}
+
+
 Foam::tmp<Foam::volScalarField>
 Foam::viscosityModels::slideRheology::calcNu() const
 {
@@ -135,6 +174,10 @@ Foam::viscosityModels::slideRheology::calcNu() const
         {
             const scalar xi = xiPtr ? xiPtr->boundaryField()[patchi][facei] : 0.0;
             nup[facei] = slide::rheology::apparentViscosity(material_, srp[facei], xi, regularisation_)/rho;
+        }
+        if (baseWallFunction_ && nup.patch().name() == "base" && U_.boundaryField()[patchi].type() == "noSlip")
+        {
+            baseWallViscosity(patchi, nup);
         }
     }
     return tnu;

@@ -45,7 +45,9 @@ generated from SlideFoam scenes by slideFoamCase:
               against its exact profile with slideFoam's viscosity cap: a Bingham
               layer, and Table 1 Case 1's Eq. (1) layer, which converges once the
               cells are thinner than the rate's decay length above the base and runs
-              fast where they are thicker (validation/cfd/rateLayer.py)
+              fast where they are thicker, unless the base's wall function (cfdDict
+              rateWallFunction) puts the wall cell on Eq. (1)'s profile
+              (validation/cfd/rateLayer.py)
   reconstruction  slideFoam's flux reconstruction returns a uniform velocity from
               its face fluxes to round-off on a mesh rotated 3.43 deg (fvc::reconstruct
               of Debian's v1912 build does not: fluxReconstruction.H) and on the
@@ -782,6 +784,16 @@ def test_layer(work):
     err = s["plug"]/s["capped_plug"] - 1
     check(err > 0.1, "Case 1's Eq. (1) layer on 16 cells (cell/l = %.1f): plug %+.1f %% against the capped exact "
           "(> +10 %%: a coarse wall cell runs fast)" % (s["cell_over_l"], 100*err))
+    # cfdDict rateWallFunction: the wall cell on Eq. (1)'s profile under the wall stress. On 8 cells (cell/l = 2.4)
+    # the plug ran +73 % without it and +5.5 % with it; the wall cell's speed is the profile's there.
+    r = rateLayer.run_layer(h, 8, 20.0, work, name="layer_8_wallFunction", wall_function=True)
+    s = rateLayer.summarise(r, rateLayer.exact(h, r["rho_ambient"]))
+    err = s["plug"]/s["capped_plug"] - 1
+    check(abs(err) < 0.08, "Case 1's Eq. (1) layer on 8 cells with the wall function: plug %+.1f %% against the capped "
+          "exact (within 8 %%)" % (100*err))
+    wall = s["wall_cell"]/s["wall_cell_capped"] - 1
+    check(abs(wall) < 0.01, "the wall function's wall cell moves at %+.2f %% of the capped profile's speed there "
+          "(within 1 %%)" % (100*wall))
 
 
 def test_reconstruction(work):
