@@ -22,20 +22,10 @@ Foam::fv::alongSlopeGravity::alongSlopeGravity
     const fvMesh& mesh
 )
 :
-    option(name, modelType, dict, mesh),
+    mixtureMomentumOption(name, modelType, dict, mesh),
     acceleration_(Zero)
 {
-    fieldNames_ = wordList(1, coeffs_.lookupOrDefault<word>("U", "U"));
-    applied_.setSize(1, false);
     read(dict);
-}
-
-
-void Foam::fv::alongSlopeGravity::addSup(fvMatrix<vector>&, const label)
-{
-    FatalErrorInFunction
-        << "fvOptions " << name_ << ": alongSlopeGravity weighs the slide's density excess over the ambient"
-        << " and needs a solver with a density (slideFoam, interFoam)" << exit(FatalError);
 }
 
 
@@ -46,8 +36,7 @@ void Foam::fv::alongSlopeGravity::addSup
     const label
 )
 {
-    const auto& mixture =
-        mesh_.lookupObject<incompressibleTwoPhaseMixture>("transportProperties");
+    const incompressibleTwoPhaseMixture& mixture = this->mixture();
     eqn += (rho() - mixture.rho2())*dimensionedVector("acceleration", dimAcceleration, acceleration_);
 }
 

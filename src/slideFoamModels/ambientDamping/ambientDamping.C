@@ -23,20 +23,10 @@ Foam::fv::ambientDamping::ambientDamping
     const fvMesh& mesh
 )
 :
-    option(name, modelType, dict, mesh),
+    mixtureMomentumOption(name, modelType, dict, mesh),
     relaxationTime_(0)
 {
-    fieldNames_ = wordList(1, coeffs_.lookupOrDefault<word>("U", "U"));
-    applied_.setSize(1, false);
     read(dict);
-}
-
-
-void Foam::fv::ambientDamping::addSup(fvMatrix<vector>&, const label)
-{
-    FatalErrorInFunction
-        << "fvOptions " << name_ << ": ambientDamping weighs the ambient's share of the mixture momentum"
-        << " and needs a solver with a density (slideFoam, interFoam)" << exit(FatalError);
 }
 
 
@@ -47,8 +37,7 @@ void Foam::fv::ambientDamping::addSup
     const label
 )
 {
-    const auto& mixture =
-        mesh_.lookupObject<incompressibleTwoPhaseMixture>("transportProperties");
+    const incompressibleTwoPhaseMixture& mixture = this->mixture();
 
     // The ambient is phase 2 (phases (slide ambient)); its fraction is clipped
     // to [0, 1] so that MULES' round-off beyond the bounds adds no source.
