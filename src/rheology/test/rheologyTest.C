@@ -17,18 +17,25 @@ using namespace slide::rheology;
 namespace
 {
 
-HerschelBulkleyRemoulding case10()
+// Eq. (1)'s six parameters, as Table 1 lists them.
+HerschelBulkleyRemoulding table1Material(double s_uo, double eta, double n, double gdotRef, double deltaRem = 1.0,
+                                         double xi95 = 1.0)
 {
-    // Table 1, Case 10: s_uo 0.5 kPa, eta 0.45, n 0.23, gdot_ref 0.06, delta_rem 0.5, xi95 10.
     HerschelBulkleyRemoulding m;
-    m.s_uo = 500.0;
-    m.eta = 0.45;
-    m.n = 0.23;
-    m.gdotRef = 0.06;
-    m.deltaRem = 0.5;
-    m.xi95 = 10.0;
+    m.s_uo = s_uo;
+    m.eta = eta;
+    m.n = n;
+    m.gdotRef = gdotRef;
+    m.deltaRem = deltaRem;
+    m.xi95 = xi95;
     return m;
 }
+
+// Table 1, Case 10: s_uo 0.5 kPa, eta 0.45, n 0.23, gdot_ref 0.06, delta_rem 0.5, xi95 10.
+HerschelBulkleyRemoulding case10() { return table1Material(500.0, 0.45, 0.23, 0.06, 0.5, 10.0); }
+
+// Table 1, Case 1: s_uo 150 Pa, eta 0.35, n 0.15, gdot_ref 0.06, no remoulding.
+HerschelBulkleyRemoulding case1() { return table1Material(150.0, 0.35, 0.15, 0.06); }
 
 double centralDifference(const std::function<double(double)>& f, double x, double h)
 {
@@ -375,21 +382,6 @@ TEST(ReturnStrength, MeetsEq1AtThePlasticRate)
 // Eq. (1)'s flow next to a wall (wallLayer.H) on Table 1 Case 1's material:
 // the closed-form speed against a quadrature of the capped model's rate, the
 // whole steady layer against its exact plug speed, and the inverse.
-namespace
-{
-
-HerschelBulkleyRemoulding case1()
-{
-    HerschelBulkleyRemoulding m;
-    m.s_uo = 150.0;
-    m.eta = 0.35;
-    m.n = 0.15;
-    m.gdotRef = 0.06;
-    return m;
-}
-
-} // namespace
-
 TEST(WallLayer, SpeedIsTheIntegralOfTheCappedRate)
 {
     const HerschelBulkleyRemoulding m = case1();
