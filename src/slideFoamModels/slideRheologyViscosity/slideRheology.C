@@ -127,6 +127,9 @@ void Foam::viscosityModels::slideRheology::baseWallViscosity(const label patchi,
     const labelUList& cells = patch.faceCells();
     const volScalarField* xiPtr = U_.db().cfindObject<volScalarField>("xi");
     const scalar rho = rho_.value(), muMax = regularisation_.muMax;
+    // The stress below which the capped material creeps depends on xi only through remoulding.
+    const bool remoulds = material_.deltaRem < 1 && xiPtr;
+    const scalar intactCap = remoulds ? 0 : slide::rheology::capStress(material_, 0.0, muMax);
     forAll(nup, facei)
     {
         const vector& n = nf[facei];
@@ -135,7 +138,8 @@ void Foam::viscosityModels::slideRheology::baseWallViscosity(const label patchi,
         const scalar z = 1/deltaCoeffs[facei];
         const scalar k = rho*mag(g - (g & n)*n);
         const scalar xi = xiPtr ? (*xiPtr)[cells[facei]] : 0.0;
-        const scalar tauWall = slide::rheology::wallLayerStress(material_, xi, muMax, u, k, z);
+        const scalar tauCap = remoulds ? slide::rheology::capStress(material_, xi, muMax) : intactCap;
+        const scalar tauWall = slide::rheology::wallLayerStress(material_, xi, muMax, tauCap, u, k, z);
         nup[facei] = (u > VSMALL ? min(tauWall*z/u, muMax) : muMax)/rho;
     }
 }
