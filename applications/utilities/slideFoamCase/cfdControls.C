@@ -56,6 +56,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     if (d.found("baseRefinement"))
     {
         c.baseRefinement = d.getLabel("baseRefinement");
+        c.baseRefinementLine = d.lineOf("baseRefinement");
         if (c.baseRefinement < 1 || c.baseRefinement > 64)
         {
             d.fail("baseRefinement", "must lie in [1, 64], got " + std::to_string(c.baseRefinement));

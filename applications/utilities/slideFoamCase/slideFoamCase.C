@@ -216,6 +216,15 @@ int main(int argc, char** argv)
                   << sc.ambient.density << " kg/m3\n"
                   << "  plug creep rate " << creep << " 1/s: " << (c.regularisation == "cap"
                       ? "muMax = " + num(muMax) + " Pa s" : "m = " + num(1.0/creep) + " s") << "\n" << std::endl;
+        if (c.baseRefinement > 4)
+        {
+            // Measured, not a limit of the mesh: a nose overrides base cells this flat and
+            // rides on the light ambient left in them (validation/cfd/README.md).
+            std::cout << "Warning: " << cfdFile << ":" << c.baseRefinementLine << ": key 'baseRefinement': base cells "
+                      << c.baseRefinement << " times thinner than the columns are wide; above 4 a head's nose has "
+                      << "ridden over light ambient left in the wall cells and broken away (validation/cfd/README.md, "
+                      << "\"Ambient under the nose\"): refine the columns (cellsPerHeight) with the base\n" << std::endl;
+        }
 
         mkdir((caseDir + "/0.orig").c_str(), 0755);
         const std::string rearPatchType = sc.slide.rearWall ? "wall" : "patch";

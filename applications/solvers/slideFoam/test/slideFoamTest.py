@@ -868,6 +868,19 @@ def test_initialVolume(work):
         cut = int(((alpha > 0) & (alpha < 1)).sum())
         check(abs(on_mesh/scene_area - 1) < tol, "%s: slide area on the mesh %.6f m2, the scene's %.6f m2 (within "
               "%.0e; %d cells cut by its surface)" % (name, on_mesh, scene_area, tol, cut))
+        if name == "case02":
+            check("Warning" not in log, "baseRefinement 4 (Table 1's): slideFoamCase gives no warning")
+    # Base cells more than 4 times thinner than the columns: a nose has ridden over the light ambient left in them
+    # (validation/cfd/README.md, "Ambient under the nose"); slideFoamCase says so, naming the file, line and key.
+    c = make_case(os.path.join(top, "tutorials", "table1", "case02"), work, "initialVolume_flatBase",
+                  cfd={"cellsPerHeight": 5, "baseRefinement": 8, "reach": 20, "behind": 10})
+    run(c, which("slideFoamCase"), "-case", ".", log="log.slideFoamCase")
+    log = open(os.path.join(c, "log.slideFoamCase")).read()
+    line = [i + 1 for i, l in enumerate(open(os.path.join(c, "system", "cfdDict"))) if l.startswith("baseRefinement")]
+    m = re.search(r"Warning: (\S+):(\d+): key 'baseRefinement': base cells 8 times thinner", log)
+    check(bool(m) and m.group(1).endswith("system/cfdDict") and int(m.group(2)) == line[0],
+          "baseRefinement 8: slideFoamCase warns, naming system/cfdDict line %s and the key (%s)"
+          % (line, m.group(0) if m else "no warning"))
 
 
 def main():
