@@ -122,7 +122,8 @@ def ambient_density(case):
     return float(re.search(r"^ambient\s*\{[^}]*?\brho\s+([^;\s]+);", text, re.M | re.S).group(1))
 
 
-def run_layer(h, cells, end_time, work, material=None, name=None, ambient=0.0, wall_function=False):
+def run_layer(h, cells, end_time, work, material=None, name=None, ambient=0.0, wall_function=False,
+              face_viscosity=False):
     """slideFoam's run of the layer (Case 1's material, or `material`'s entries instead; `ambient` m of the scene's
     light ambient over it); its cell centres' heights and the velocity along the slope at each write."""
     name = name or "layer_h%g_N%d" % (h, cells)
@@ -130,7 +131,8 @@ def run_layer(h, cells, end_time, work, material=None, name=None, ambient=0.0, w
                      scene=dict({"length": LENGTH, "height": h, "rearPosition": 0}, **(material or {})),
                      control={"endTime": end_time, "writeInterval": end_time/4, "stopAtRest": "no"},
                      cfd=dict({"cellsPerHeight": 4, "reach": 1, "behind": 1},
-                              **({"rateWallFunction": "yes"} if wall_function else {})))
+                              **({"rateWallFunction": "yes"} if wall_function else {}),
+                              **({"faceViscosity": "yes"} if face_viscosity else {})))
     run(case, which("slideFoamCase"), "-case", ".")
     open(os.path.join(case, "system", "blockMeshDict"), "w").write(block_mesh(h, cells, ambient))
     # Gravity split: p_rgh carries the part normal to the base, a body force the part along it (a cyclic
@@ -182,7 +184,8 @@ def summarise(r, ex):
 
 
 def write_report(rows, args):
-    suffix = ("Ambient" if args.ambient else "") + ("WallFunction" if args.wall_function else "")
+    suffix = (("Ambient" if args.ambient else "") + ("WallFunction" if args.wall_function else "")
+              + ("FaceViscosity" if args.face_viscosity else ""))
     md = os.path.join(here, "rateLayer%s.md" % suffix)
     with open(md, "w") as f:
         f.write("# What base cell Eq. (1)'s rate term needs: Case 1's slide as a steady infinite layer\n\n")
@@ -194,7 +197,8 @@ def write_report(rows, args):
                 "(`rateLayer.py`'s docstring). l = n (tau_b - s_uo)/(rho' g S): the height over which the rate falls "
                 "by e above the base. Plug: the mean speed of the cells above the yield height.\n\n"
                 % (args.depths, args.cells, " --ambient %g" % args.ambient if args.ambient else "",
-                   " --wall-function" if args.wall_function else "", S_UO, ETA, N_HB,
+                   (" --wall-function" if args.wall_function else "")
+                   + (" --face-viscosity" if args.face_viscosity else ""), S_UO, ETA, N_HB,
                    GDOT_REF, RHO, THETA,
                    " with %g m of the scene's light ambient between them (cells of the layer's size)" % args.ambient
                    if args.ambient else "",
@@ -243,6 +247,8 @@ def main():
                    help="[m] of the scene's light ambient over the layer (0: none, the lid on the layer)")
     p.add_argument("--wall-function", action="store_true",
                    help="cfdDict rateWallFunction yes: the base's stress from Eq. (1)'s profile through the wall cell")
+    p.add_argument("--face-viscosity", action="store_true",
+                   help="cfdDict faceViscosity yes: the slide's viscosity on each face at the face's own strain rate")
     p.add_argument("--work", default="")
     p.add_argument("--keep", action="store_true")
     args = p.parse_args()
@@ -252,7 +258,8 @@ def main():
     for h in [float(x) for x in args.depths.split(",")]:
         end = args.end_time or max(20.0, round(12*exact(h)["relaxation_time"]))
         for n in [int(x) for x in args.cells.split(",")]:
-            r = run_layer(h, n, end, work, ambient=args.ambient, wall_function=args.wall_function)
+            r = run_layer(h, n, end, work, ambient=args.ambient, wall_function=args.wall_function,
+                          face_viscosity=args.face_viscosity)
             s = summarise(r, exact(h, r["rho_ambient"]))
             print("h %g m, N %d: plug %s m/s (exact %.4g, capped %.4g), %.1f s wall"
                   % (h, n, ", ".join("%.4g at %g s" % (p, t) for t, p in s["plugs"]), s["exact_plug"],

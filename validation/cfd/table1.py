@@ -36,16 +36,19 @@ def fatal_error(log):
 
 def counting(r):
     """", xi per cell" for a row whose xi counted each cell's strain (--xi-per-cell), ", no rate effect" for Case 1
-    without Eq. (1)'s rate term (--rate-free), ", Eq. (1)'s wall function on the base" (--wall-function), else ""."""
+    without Eq. (1)'s rate term (--rate-free), ", Eq. (1)'s wall function on the base" (--wall-function), ", the
+    slide's viscosity at each face's rate" (--face-viscosity), else ""."""
     return ((", xi per cell" if r.get("xi_per_cell") else "") + (", no rate effect" if r.get("rate_free") else "")
-            + (", Eq. (1)'s wall function on the base" if r.get("wall_function") else ""))
+            + (", Eq. (1)'s wall function on the base" if r.get("wall_function") else "")
+            + (", the slide's viscosity at each face's rate" if r.get("face_viscosity") else ""))
 
 
 def case_name(c, cells, mesh):
     """The work directory's name of a run: caseNN_H0_n with what the row's key adds (--continue reads it back)."""
-    return "case%02d_H0_%d%s%s%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else "",
-                                     "_rateFree" if mesh.get("rate_free") else "",
-                                     "_wallFunction" if mesh.get("wall_function") else "")
+    return "case%02d_H0_%d%s%s%s%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else "",
+                                       "_rateFree" if mesh.get("rate_free") else "",
+                                       "_wallFunction" if mesh.get("wall_function") else "",
+                                       "_faceViscosity" if mesh.get("face_viscosity") else "")
 
 
 # Mesh and run options passed to cfdDict as numbers: (option and row key, cfdDict entry, help).
@@ -81,6 +84,8 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
         cfd["top"] = mesh["top"]
     if mesh.get("wall_function"):
         cfd["rateWallFunction"] = "yes"
+    if mesh.get("face_viscosity"):
+        cfd["faceViscosity"] = "yes"
     for key, entry, _ in CFD_ENTRIES:
         if mesh.get(key) is not None:
             cfd[entry] = "%.6g" % mesh[key]
@@ -144,7 +149,7 @@ def case_row(c, cells, d, dam_runout, mesh):
 def row_key(r):
     # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
     return (r["case"], r["cells"], base_cells(r), bool(r.get("xi_per_cell")), bool(r.get("rate_free")),
-            bool(r.get("wall_function")))
+            bool(r.get("wall_function")), bool(r.get("face_viscosity")))
 
 
 def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
@@ -154,11 +159,12 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from). ambient_relaxation:
     the light ambient relaxes to rest on this time scale [s] from the leg's start on (cfdDict ambientRelaxationTime
     and the constant/fvOptions slideFoamCase writes for it)."""
-    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?(_rateFree)?(_wallFunction)?$", os.path.basename(os.path.normpath(d)))
+    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?(_rateFree)?(_wallFunction)?(_faceViscosity)?$", os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
     key = row_key({"case": int(m.group(1)), "cells": int(m.group(2)), "xi_per_cell": bool(m.group(3)),
                    "rate_free": bool(m.group(4)), "wall_function": bool(m.group(5)),
+                   "face_viscosity": bool(m.group(6)),
                    "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)})
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
@@ -206,8 +212,8 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
         s = read_summary(summary)
     legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
-    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "rate_free", "wall_function", "top",
-                                    "ambient_relaxation_steps"]
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "rate_free", "wall_function", "face_viscosity",
+                                    "top", "ambient_relaxation_steps"]
             + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
     for k, entry, _ in CFD_ENTRIES:
@@ -245,6 +251,9 @@ def main():
     ap.add_argument("--wall-function", action="store_true",
                     help="cfdDict rateWallFunction yes: the no-slip base's stress from Eq. (1)'s profile through the "
                     "wall cell (validation/cfd/rateLayer.md)")
+    ap.add_argument("--face-viscosity", action="store_true",
+                    help="cfdDict faceViscosity yes: the slide's viscosity on each face at the face's own strain rate "
+                    "instead of the mean of the two cells' (validation/cfd/rateLayer.md)")
     ap.add_argument("--top", choices=["open", "slip"], default=None,
                     help="the mesh's top (cfdDict top; default open): slip closes it with a lid that keeps the spray "
                     "a fast thin head throws into the light ambient (Case 4) in the domain")
@@ -272,7 +281,7 @@ def main():
         for n in cells:
             mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES}, refinement=args.base_refinement,
                         max_co=args.max_co, xi_per_cell=args.xi_per_cell, rate_free=args.rate_free, top=args.top,
-                        wall_function=args.wall_function)
+                        wall_function=args.wall_function, face_viscosity=args.face_viscosity)
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)

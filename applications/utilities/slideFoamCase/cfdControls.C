@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
-                      "pressureCoupling", "conservePlugMomentum", "shearBandThickness", "rateWallFunction",
+                      "pressureCoupling", "conservePlugMomentum", "shearBandThickness", "rateWallFunction", "faceViscosity",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -78,6 +78,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
         d.fail("rateWallFunction", "the wall function follows Eq. (1)'s profile under the viscosity cap: it needs"
                " regularisation cap, got " + c.regularisation);
     }
+    c.faceViscosity = d.getBool("faceViscosity", false);
     if (d.found("plugCreepRate"))
     {
         c.plugCreepRate = d.getScalarInRange("plugCreepRate", 0.0, 1e3, false, true, "plug creep rate [1/s]");
@@ -122,6 +123,7 @@ std::string CfdControls::describe() const
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << (rateWallFunction ? ", Eq. (1)'s wall function on the base" : "")
+       << (faceViscosity ? ", the slide's viscosity at each face's rate" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;
     if (shearBandThickness > 0.0) os << ", xi counts shear bands " << shearBandThickness << " m thick";
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";

@@ -277,6 +277,7 @@ int main(int argc, char** argv)
                    ? "        shearBandThickness " + num(c.shearBandThickness) + ";   // cfdDict: xi per band this thick\n"
                    : "")
                << (c.rateWallFunction ? "        baseWallFunction yes;   // cfdDict rateWallFunction\n" : "")
+               << (c.faceViscosity ? "        faceViscosity   yes;   // cfdDict faceViscosity\n" : "")
                << "    }\n"
                << "    rho             " << num(rhoSlide) << ";\n}\n\n"
                << "ambient\n{\n    transportModel  Newtonian;\n    nu              "

@@ -2,6 +2,7 @@
 #include "slideSceneObject.H"
 #include "wallLayer.H"
 #include "addToRunTimeSelectionTable.H"
+#include "fvc.H"
 
 namespace Foam
 {
@@ -54,6 +55,8 @@ void Foam::viscosityModels::slideRheology::readCoeffs()
             << "key 'baseWallFunction': the wall function follows Eq. (1)'s rate profile under the viscosity cap;"
             << " it needs regularisation cap and a rate effect (eta > 0)" << exit(FatalIOError);
     }
+
+    faceViscosity_ = coeffs_.getOrDefault<bool>("faceViscosity", false);
 
     shearBandThickness_ = coeffs_.getOrDefault<scalar>("shearBandThickness", 0);
     if (shearBandThickness_ < 0 || !std::isfinite(shearBandThickness_))
@@ -185,6 +188,56 @@ Foam::viscosityModels::slideRheology::calcNu() const
         }
     }
     return tnu;
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::viscosityModels::slideRheology::faceNu() const
+{
+    const fvMesh& mesh = U_.mesh();
+    surfaceTensorField gradUf(fvc::interpolate(fvc::grad(U_)));
+    const surfaceVectorField nf(mesh.Sf()/mesh.magSf());
+    // In a layer sheared across its faces this is (u_N - u_P)/d, each face's own rate.
+    gradUf += nf*(fvc::snGrad(U_) - (nf & gradUf));
+    const surfaceScalarField sr(sqrt(2.0)*mag(symm(gradUf)));
+    const volScalarField* xiPtr = U_.db().cfindObject<volScalarField>("xi");
+    tmp<surfaceScalarField> txif;
+    if (xiPtr) txif = fvc::interpolate(*xiPtr);
+
+    tmp<surfaceScalarField> tnuf
+    (
+        new surfaceScalarField
+        (
+            IOobject(nu_.name() + "Face", U_.time().timeName(), U_.db()),
+            mesh,
+            dimensionedScalar(dimViscosity, Zero)
+        )
+    );
+    surfaceScalarField& nuf = tnuf.ref();
+    const scalar rho = rho_.value();
+    forAll(nuf, facei)
+    {
+        const scalar xi = xiPtr ? txif()[facei] : 0.0;
+        nuf[facei] = slide::rheology::apparentViscosity(material_, sr[facei], xi, regularisation_)/rho;
+    }
+    forAll(nuf.boundaryField(), patchi)
+    {
+        fvsPatchScalarField& nup = nuf.boundaryFieldRef()[patchi];
+        if (nup.coupled())
+        {
+            const scalarField& srp = sr.boundaryField()[patchi];
+            forAll(nup, facei)
+            {
+                const scalar xi = xiPtr ? txif().boundaryField()[patchi][facei] : 0.0;
+                nup[facei] = slide::rheology::apparentViscosity(material_, srp[facei], xi, regularisation_)/rho;
+            }
+        }
+        else
+        {
+            nup = nu_.boundaryField()[patchi];
+        }
+    }
+    return tnuf;
 }
 
 

@@ -794,6 +794,19 @@ def test_layer(work):
     wall = s["wall_cell"]/s["wall_cell_capped"] - 1
     check(abs(wall) < 0.01, "the wall function's wall cell moves at %+.2f %% of the capped profile's speed there "
           "(within 1 %%)" % (100*wall))
+    # cfdDict faceViscosity with the wall function: each interior face's viscosity at its own rate, so the
+    # increments between cells follow Eq. (1) too. On 32 cells (cell/l = 0.6) the plug ran -7.9 % with the wall
+    # function alone and -1.3 % with both; the face's rate makes the interior converge at about second order
+    # (-4.0, -1.3, -0.4, -0.1 % on 16 to 128 cells, validation/cfd/rateLayerWallFunctionFaceViscosity.md).
+    errs = []
+    for cells in (16, 32):
+        r = rateLayer.run_layer(h, cells, 20.0, work, name="layer_%d_faceViscosity" % cells, wall_function=True,
+                                face_viscosity=True)
+        s = rateLayer.summarise(r, rateLayer.exact(h, r["rho_ambient"]))
+        errs.append(s["plug"]/s["capped_plug"] - 1)
+    check(abs(errs[1]) < 0.025 and abs(errs[1]) < 0.5*abs(errs[0]),
+          "Case 1's Eq. (1) layer with the wall function and face viscosities: plug %+.2f %% on 16 cells, %+.2f %% "
+          "on 32 (within 2.5 %% on 32, and at most half the error on 16)" % (100*errs[0], 100*errs[1]))
 
 
 def test_reconstruction(work):
