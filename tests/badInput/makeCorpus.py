@@ -302,6 +302,8 @@ add("mpm-shifting-level-set", "particle shifting over a base that cuts the grid 
 add("cfd-wall-function-papanastasiou", "Eq. (1)'s wall function with the Papanastasiou regularisation (it follows the "
     "capped profile)", "system/cfdDict", cfd0[:-1] + ["regularisation  papanastasiou;", "rateWallFunction yes;", ""],
     len(cfd0) + 1, "rateWallFunction", "slideFoamCase")
+add("cfd-face-viscosity-not-bool", "face viscosities asked with a word that is not yes or no", "system/cfdDict",
+    cfd0[:-1] + ["faceViscosity   faces;", ""], len(cfd0), "faceViscosity", "slideFoamCase")
 
 
 def main():
