@@ -192,10 +192,10 @@ Foam::viscosityModels::slideRheology::calcNu() const
 
 
 Foam::tmp<Foam::surfaceScalarField>
-Foam::viscosityModels::slideRheology::faceNu() const
+Foam::viscosityModels::slideRheology::faceNu(const volTensorField& gradU) const
 {
     const fvMesh& mesh = U_.mesh();
-    surfaceTensorField gradUf(fvc::interpolate(fvc::grad(U_)));
+    surfaceTensorField gradUf(fvc::interpolate(gradU));
     const surfaceVectorField nf(mesh.Sf()/mesh.magSf());
     // In a layer sheared across its faces this is (u_N - u_P)/d, each face's own rate.
     gradUf += nf*(fvc::snGrad(U_) - (nf & gradUf));
