@@ -34,21 +34,24 @@ def fatal_error(log):
     return m.group(1).strip() if m else None
 
 
+# The on/off run options, in the order of the work directory's name: (option and row key, the name's suffix,
+# the row's description, the cfdDict entry it sets or None). Each is part of a row's key.
+SWITCHES = [
+    ("xi_per_cell", "_perCell", ", xi per cell", ("shearBandThickness", 0)),
+    ("rate_free", "_rateFree", ", no rate effect", None),
+    ("wall_function", "_wallFunction", ", Eq. (1)'s wall function on the base", ("rateWallFunction", "yes")),
+    ("face_viscosity", "_faceViscosity", ", the slide's viscosity at each face's rate", ("faceViscosity", "yes")),
+]
+
+
 def counting(r):
-    """", xi per cell" for a row whose xi counted each cell's strain (--xi-per-cell), ", no rate effect" for Case 1
-    without Eq. (1)'s rate term (--rate-free), ", Eq. (1)'s wall function on the base" (--wall-function), ", the
-    slide's viscosity at each face's rate" (--face-viscosity), else ""."""
-    return ((", xi per cell" if r.get("xi_per_cell") else "") + (", no rate effect" if r.get("rate_free") else "")
-            + (", Eq. (1)'s wall function on the base" if r.get("wall_function") else "")
-            + (", the slide's viscosity at each face's rate" if r.get("face_viscosity") else ""))
+    """What the row's switches add to its mesh's description (", xi per cell", ...), else ""."""
+    return "".join(text for key, _, text, _ in SWITCHES if r.get(key))
 
 
 def case_name(c, cells, mesh):
     """The work directory's name of a run: caseNN_H0_n with what the row's key adds (--continue reads it back)."""
-    return "case%02d_H0_%d%s%s%s%s" % (c, cells, "_perCell" if mesh.get("xi_per_cell") else "",
-                                       "_rateFree" if mesh.get("rate_free") else "",
-                                       "_wallFunction" if mesh.get("wall_function") else "",
-                                       "_faceViscosity" if mesh.get("face_viscosity") else "")
+    return "case%02d_H0_%d" % (c, cells) + "".join(suffix for key, suffix, _, _ in SWITCHES if mesh.get(key))
 
 
 # Mesh and run options passed to cfdDict as numbers: (option and row key, cfdDict entry, help).
@@ -78,14 +81,11 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
     slideDAM's)."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": mesh["refinement"], "processors": processors}
-    if mesh.get("xi_per_cell"):
-        cfd["shearBandThickness"] = 0
+    for key, _, _, entry in SWITCHES:
+        if entry and mesh.get(key):
+            cfd[entry[0]] = entry[1]
     if mesh.get("top"):
         cfd["top"] = mesh["top"]
-    if mesh.get("wall_function"):
-        cfd["rateWallFunction"] = "yes"
-    if mesh.get("face_viscosity"):
-        cfd["faceViscosity"] = "yes"
     for key, entry, _ in CFD_ENTRIES:
         if mesh.get(key) is not None:
             cfd[entry] = "%.6g" % mesh[key]
@@ -148,8 +148,7 @@ def case_row(c, cells, d, dam_runout, mesh):
 
 def row_key(r):
     # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
-    return (r["case"], r["cells"], base_cells(r), bool(r.get("xi_per_cell")), bool(r.get("rate_free")),
-            bool(r.get("wall_function")), bool(r.get("face_viscosity")))
+    return (r["case"], r["cells"], base_cells(r)) + tuple(bool(r.get(key)) for key, _, _, _ in SWITCHES)
 
 
 def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
@@ -159,13 +158,13 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from). ambient_relaxation:
     the light ambient relaxes to rest on this time scale [s] from the leg's start on (cfdDict ambientRelaxationTime
     and the constant/fvOptions slideFoamCase writes for it)."""
-    m = re.match(r"case(\d+)_H0_(\d+)(_perCell)?(_rateFree)?(_wallFunction)?(_faceViscosity)?$", os.path.basename(os.path.normpath(d)))
+    m = re.match(r"case(\d+)_H0_(\d+)%s$" % "".join("(%s)?" % suffix for _, suffix, _, _ in SWITCHES),
+                 os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
-    key = row_key({"case": int(m.group(1)), "cells": int(m.group(2)), "xi_per_cell": bool(m.group(3)),
-                   "rate_free": bool(m.group(4)), "wall_function": bool(m.group(5)),
-                   "face_viscosity": bool(m.group(6)),
-                   "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)})
+    key = row_key(dict({"case": int(m.group(1)), "cells": int(m.group(2)),
+                        "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)},
+                       **{key: bool(m.group(3 + i)) for i, (key, _, _, _) in enumerate(SWITCHES)}))
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
         raise SystemExit("--continue: table1.json has no run of Case %d at H0/%d to continue" % key[:2])
@@ -212,9 +211,8 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
         s = read_summary(summary)
     legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
-    mesh = {k: old.get(k) for k in ["refinement", "max_co", "xi_per_cell", "rate_free", "wall_function", "face_viscosity",
-                                    "top", "ambient_relaxation_steps"]
-            + [e[0] for e in CFD_ENTRIES]}
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "top", "ambient_relaxation_steps"]
+            + [e[0] for e in SWITCHES] + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
     for k, entry, _ in CFD_ENTRIES:
         value = get_entry(os.path.join(d, "system", "cfdDict"), entry)
@@ -279,9 +277,9 @@ def main():
                                      json.load(open(os.path.join(here, "table1.json"))), args.ambient_relaxation))
     for c in cases:
         for n in cells:
-            mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES}, refinement=args.base_refinement,
-                        max_co=args.max_co, xi_per_cell=args.xi_per_cell, rate_free=args.rate_free, top=args.top,
-                        wall_function=args.wall_function, face_viscosity=args.face_viscosity)
+            mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES},
+                        **{key: getattr(args, key) for key, _, _, _ in SWITCHES},
+                        refinement=args.base_refinement, max_co=args.max_co, top=args.top)
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
