@@ -12,8 +12,8 @@ table = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "../../../share
 
 # End times: long enough for the slowest slide to come to rest (Case 4/5 run for
 # kilometres), and the paper's snapshot times where the slide does not stop.
-end_times = {1: 400, 2: 200, 3: 100, 4: 2000, 5: 3000, 6: 100, 7: 100, 8: 100, 9: 20, 10: 300,
-             11: 30, 12: 40, 13: 300}
+end_times = {1: 400, 2: 200, 3: 600, 4: 2000, 5: 3000, 6: 100, 7: 100, 8: 100, 9: 20, 10: 2000,
+             11: 30, 12: 40, 13: 3000}
 
 header = """/*--------------------------------*- C++ -*----------------------------------*\\
   SlideFoam scene: Table 1, Case {case} of Dong, Wang & Cui (2020).
