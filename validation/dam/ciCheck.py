@@ -12,7 +12,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from slidefoam_io import read_runout, read_summary  # noqa: E402
+from slidefoam_io import front_at, read_runout, read_summary  # noqa: E402
 
 app, work = sys.argv[1], sys.argv[2]
 
@@ -53,8 +53,8 @@ ok = s["at_rest"]
 checks.append(ok)
 print("%-58s %10s  %s" % ("Case 10 comes to rest (at %.0f m, %.0f s)" % (s["runout_m"], s["end_time_s"]), ok,
                           "ok" if ok else "MISS"))
-t = list(r["time"])
-stalled = [r["front"][t.index(100.0)], r["front"][t.index(400.0)]]
+history = list(zip(r["time"], r["front"]))
+stalled = [front_at(history, 100.0), front_at(history, 400.0)]
 ok = stalled[1] - stalled[0] < 0.01*stalled[1]
 checks.append(ok)
 print("%-58s %10.2f  < 1 %% of the front  %s" % ("Case 10 front's travel from 100 to 400 s [m] (stalled)",
