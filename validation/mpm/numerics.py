@@ -87,6 +87,24 @@ def table1_row(table1, case, cells, ppc):
     return rows[-1] if rows else None
 
 
+def change_against(r, base):
+    """The bracket of variant row r against the default's row `base`, compared at the same time: a run still moving
+    at its end is set beside the other's front at that time (a Table 1 row keeps its history), never beside a
+    runout reached later (Case 3's default row ran to rest at 435 s, its variants to 100 s)."""
+    end = lambda x: float("inf") if x["atRest"] else x["endTime"]
+    t = min(end(r), end(base))
+    if t == end(r) == end(base):
+        return " (%+.1f %%)" % (100.0*(r["runout"]/base["runout"] - 1.0))
+    if t == end(r):
+        # A default row at rest before t stands where it stopped.
+        ref = base["runout"] if base["atRest"] and t >= base["endTime"] else \
+            front_at(base.get("history") or [], (t,))["%g" % t]
+        return " (%+.1f %% against the default's front at %g s)" % (100.0*(r["runout"]/ref - 1.0), t) \
+            if ref else " (the default's front at %g s not stored)" % t
+    # The variant ran on past a default row that ended moving; its own front at that time is not stored.
+    return " (the default ended moving at %g s)" % t
+
+
 def row_of(res, key):
     """numerics.json's row of a run of variant `key` (run_case's or case_result's dict)."""
     res["variant"] = key
@@ -198,7 +216,7 @@ def write_table(results):
                 continue
             text = "%.2f" % r["runout"]
             if key != "apic" and base is not None:
-                text += " (%+.1f %%)" % (100.0*(r["runout"]/base["runout"] - 1.0))
+                text += change_against(r, base)
             text += ", at rest by %.0f s" % r["endTime"] if r["atRest"] else ", moving at %g s" % r["endTime"]
             if r.get("numericalDissipation") is not None:
                 text += ", numerical %.1f %%" % (100.0*r["numericalDissipation"])
