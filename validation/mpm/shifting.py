@@ -1,20 +1,26 @@
 #!/usr/bin/env python3
-"""Particle shifting against the particles' crowding on the base (README, open problem 13): runs slideMPM on the
-rate-free Case 1 (Case 1 without Eq. (1)'s rate term, paper.CASE1_RATE_FREE_SCENE; quadratic transfer, as
-numerics.py's rateFree variant) at H0/20 to 40 s for each shift coefficient (mpmDict `particleShifting`, 0 = off)
-and particles per cell, and writes shifting.md, shifting.json and shifting.png beside this script.
+"""Particle shifting against the particles' crowding on the base (README, open problem 13): runs slideMPM on a
+slide for each shift coefficient (mpmDict `particleShifting`, 0 = off) and number of particles per cell, and writes
+shifting.md, shifting.json and shifting.png beside this script. Two studies:
 
-The question: without shifting the runout at 40 s depends on the particles per cell (2x2 216 m, 4x4 334 m, 8x8
-397 m), because particles crowd into the cell on the no-slip base and the base's nodes then weigh a yield stress by
-the overfill. If shifting removes the crowding, the runout stops depending on the particles per cell, and stops
-depending on the coefficient once it is large enough to keep up with the crowding. slideFoam's rate-free Case 1
-(validation/cfd/table1.json, H0/20 with H0/80 on the base) is set beside it.
+- Case 1 (the default): the rate-free Case 1 (Case 1 without Eq. (1)'s rate term, paper.CASE1_RATE_FREE_SCENE;
+  quadratic transfer, as numerics.py's rateFree variant) at H0/20 to 40 s. Without shifting the runout at 40 s
+  depends on the particles per cell (2x2 216 m, 4x4 334 m, 8x8 397 m), because particles crowd into the cell on the
+  no-slip base and the base's nodes then weigh a yield stress by the overfill. If shifting removes the crowding, the
+  runout stops depending on the particles per cell, and stops depending on the coefficient once it is large enough
+  to keep up with the crowding. slideFoam's rate-free Case 1 (validation/cfd/table1.json, H0/20 with H0/80 on the
+  base) is set beside it.
+- Any other Table 1 case (--case 10, --case 13): the case as tabled, Eq. (1) and remoulding, with Table 1's numerics
+  (APIC, H0/10) to 30 s, by which the unshifted fronts of Cases 10 and 13 have stalled (README, open problem 3).
+  The question: does the front at 30 s converge in the particles per cell, with and without shifting, and to what?
+  Both columns are run here.
 
-Usage: validation/mpm/shifting.py [--shifts 0.01,0.03,0.1] [--ppc 2,4,8] [--end-time 40] [--stored]
+Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4,8] [--end-time T] [--stored]
        [--import DIR ...]
-(The row without shifting is numerics.py's rateFree variant at H0/20, read from numerics.json: run it there.)
-(2 threads: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a run; a run keeps the stored results of the other
-points; --import reads finished run directories named case01_h20_p<ppc>_k<shift> instead of running them)"""
+(For Case 1 the row without shifting is numerics.py's rateFree variant at H0/20, read from numerics.json: run it
+there. 2 threads, Case 1: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a run; Cases 10 and 13 to 30 s:
+4x4 about 30 s, 8x8 about 100 s, 16x16 about 7 minutes a run. A run keeps the stored results of the other
+points; --import reads finished run directories named case<NN>_h<cells>_p<ppc>_k<shift> instead of running them)"""
 import argparse
 import json
 import os
@@ -28,21 +34,32 @@ from table1 import run_case, case_result, front_at  # noqa: E402
 from numerics import RATE_FREE_CLAY  # noqa: E402
 from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 
-CELLS = 20
+
+def study(case):
+    """(cells per H0, end time [s], sceneProperties entries, mpmDict entries, description) of a case's study."""
+    if case == 1:
+        return (20, 40.0, CASE1_RATE_FREE_SCENE, {"transfer": "quadratic", **RATE_FREE_CLAY},
+                "the rate-free Case 1 (no rate term, s_uo 225 Pa), quadratic transfer, H0/20")
+    return (10, 30.0, None, {}, "Table 1 Case %d as tabled (Eq. (1), remoulding), APIC, H0/10" % case)
 
 
-def numerics_of(shift):
-    num = {"transfer": "quadratic", **RATE_FREE_CLAY}
+def numerics_of(case, shift):
+    num = dict(study(case)[3])
     if shift > 0:
         num["particleShifting"] = shift
     return num
 
 
-def row_of(res, shift):
+def row_of(res, shift, times):
     history = res.pop("history", None) or []
     res["shift"] = shift
-    res["frontAt"] = front_at(history, (10, 20, 30))
+    res["frontAt"] = front_at(history, times)
     return res
+
+
+def times_of(case):
+    end = study(case)[1]
+    return tuple(t for t in (10, 20, 30) if t < end)
 
 
 def slidefoam_rate_free():
@@ -54,39 +71,51 @@ def slidefoam_rate_free():
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--shifts", default="0.01,0.03,0.1")
-    ap.add_argument("--ppc", default="2,4,8")
-    ap.add_argument("--end-time", type=float, default=40.0)
+    ap.add_argument("--case", type=int, default=1, help="1: the rate-free Case 1; another: that Table 1 case")
+    ap.add_argument("--shifts", default=None, help="default 0.01,0.03,0.1 (Case 1), 0,0.03 (another case)")
+    ap.add_argument("--ppc", default=None, help="default 2,4,8 (Case 1), 4,8,16 (another case)")
+    ap.add_argument("--end-time", type=float, default=None, help="default 40 s (Case 1), 30 s (another case)")
     ap.add_argument("--stored", action="store_true", help="rewrite shifting.md and .png from shifting.json")
     ap.add_argument("--import", dest="imports", nargs="*", default=[],
-                    help="finished run directories case01_h20_p<ppc>_k<shift> to store instead of running")
+                    help="finished run directories case<NN>_h<cells>_p<ppc>_k<shift> to store instead of running")
     args = ap.parse_args()
+    case = args.case
+    cells, end, scene, _, _ = study(case)
+    if args.end_time is not None and args.end_time != end:
+        raise SystemExit("shifting.py: --end-time: the study of Case %d is to %g s (the table compares at it)"
+                         % (case, end))
+    shifts = args.shifts or ("0.01,0.03,0.1" if case == 1 else "0,0.03")
+    ppcs = args.ppc or ("2,4,8" if case == 1 else "4,8,16")
     path = os.path.join(here, "shifting.json")
     stored = json.load(open(path)) if os.path.isfile(path) else []
     new = []
     for d in args.imports:
-        m = re.search(r"case01_h%d_p(\d+)_k([0-9.eE+-]+)$" % CELLS, d.rstrip("/"))
-        if not m:
-            raise SystemExit("shifting.py: --import %s: not a run directory case01_h%d_p<ppc>_k<shift>" % (d, CELLS))
-        new.append(row_of(case_result(1, CELLS, int(m.group(1)), d), float(m.group(2))))
+        m = re.search(r"case(\d\d)_h(\d+)_p(\d+)_k([0-9.eE+-]+)$", d.rstrip("/"))
+        if not m or int(m.group(1)) != case or int(m.group(2)) != cells:
+            raise SystemExit("shifting.py: --import %s: not a run directory case%02d_h%d_p<ppc>_k<shift> of this "
+                             "study" % (d, case, cells))
+        res = case_result(case, cells, int(m.group(3)), d)
+        if abs(res["endTime"] - end) > 1e-6 and not res["atRest"]:
+            raise SystemExit("shifting.py: --import %s: ended at %g s, not the study's %g s" % (d, res["endTime"], end))
+        new.append(row_of(res, float(m.group(4)), times_of(case)))
     if not args.stored and not args.imports:
         work = tempfile.mkdtemp(prefix="slideMPM_shifting_")
-        for shift in [float(s) for s in args.shifts.split(",")]:
-            if not shift > 0:
-                raise SystemExit("shifting.py: --shifts: the runs without shifting are numerics.py's rateFree variant")
-            for ppc in [int(p) for p in args.ppc.split(",")]:
-                res = run_case(1, CELLS, ppc, work, numerics=numerics_of(shift), scene=CASE1_RATE_FREE_SCENE,
-                               tag="_k%g" % shift, end_time=args.end_time)
+        for shift in [float(s) for s in shifts.split(",")]:
+            if case == 1 and not shift > 0:
+                raise SystemExit("shifting.py: --shifts: Case 1's runs without shifting are numerics.py's rateFree "
+                                 "variant")
+            for ppc in [int(p) for p in ppcs.split(",")]:
+                res = run_case(case, cells, ppc, work, numerics=numerics_of(case, shift), scene=scene,
+                               tag="_k%g" % shift, end_time=end)
                 if "failed" in res:
                     raise SystemExit("shifting.py: the run with shift %g, %dx%d failed:\n%s"
                                      % (shift, ppc, ppc, res["failed"]))
-                new.append(row_of(res, shift))
-                print("shift %g, %dx%d: %.2f m at %g s, %.0f s wall" % (shift, ppc, ppc, new[-1]["runout"],
-                                                                       new[-1]["endTime"], new[-1]["wall"]),
-                      flush=True)
-    keys = {(r["shift"], r["ppc"]) for r in new}
-    results = sorted([r for r in stored if (r["shift"], r["ppc"]) not in keys] + new,
-                     key=lambda r: (r["shift"], r["ppc"]))
+                new.append(row_of(res, shift, times_of(case)))
+                print("Case %d, shift %g, %dx%d: %.2f m at %g s, %.0f s wall" % (
+                    case, shift, ppc, ppc, new[-1]["runout"], new[-1]["endTime"], new[-1]["wall"]), flush=True)
+    keys = {(r["case"], r["shift"], r["ppc"]) for r in new}
+    results = sorted([r for r in stored if (r["case"], r["shift"], r["ppc"]) not in keys] + new,
+                     key=lambda r: (r["case"], r["shift"], r["ppc"]))
     if new:
         with open(path, "w") as f:
             json.dump(results, f, indent=1)
@@ -94,64 +123,110 @@ def main():
 
 
 def unshifted():
-    """numerics.py's rateFree rows at H0/20 to 40 s: this study without shifting."""
+    """numerics.py's rateFree rows at H0/20 to 40 s: Case 1's study without shifting."""
     path = os.path.join(here, "numerics.json")
     rows = json.load(open(path)) if os.path.isfile(path) else []
     out = []
     for r in rows:
-        if r["variant"] == "rateFree" and r["case"] == 1 and r["cells"] == CELLS and r.get("endTimeCut") == 40.0:
+        if r["variant"] == "rateFree" and r["case"] == 1 and r["cells"] == 20 and r.get("endTimeCut") == 40.0:
             out.append(dict(r, shift=0.0, frontAt={t: r["frontAt"].get(t) for t in ("10", "20", "30")}))
     return out
 
 
-def write(results):
-    results = unshifted() + results
-    cfd = slidefoam_rate_free()
-    shifts = sorted({r["shift"] for r in results})
-    ppcs = sorted({r["ppc"] for r in results})
-    at = {(r["shift"], r["ppc"]): r for r in results}
-    lines = ["# Particle shifting: the rate-free Case 1's runout against the particles per cell", "",
-             "Regenerated by `validation/mpm/shifting.py` (its docstring says why). slideMPM, rate-free Case 1 "
-             "(no rate term, s_uo 225 Pa), quadratic transfer, H0/20, to 40 s. Each entry: the front at 40 s, then "
-             "at 10 / 20 / 30 s, the front's speed at 40 s, and the wall time on 2 threads. `particleShifting` 0 is "
-             "no shifting.", ""]
-    if cfd:
+def convergence(values):
+    """The observed order in the particles per cell of three values at doubling ppc, and the limit it gives
+    (None where the differences do not shrink monotonically)."""
+    (p1, a), (p2, b), (p3, c) = values
+    if p2 != 2*p1 or p3 != 2*p2 or (b - a)*(c - b) <= 0 or abs(c - b) >= abs(b - a):
+        return None
+    order = __import__("math").log2((b - a)/(c - b))
+    return order, c + (c - b)/(2**order - 1)
+
+
+def case_table(case, rows, cfd):
+    cells, end, _, _, what = study(case)
+    times = [str(t) for t in times_of(case)]
+    shifts = sorted({r["shift"] for r in rows})
+    ppcs = sorted({r["ppc"] for r in rows})
+    at = {(r["shift"], r["ppc"]): r for r in rows}
+    lines = ["## Case %d: %s, to %g s" % (case, what, end), ""]
+    lines.append("Each entry: the front at %g s, then at %s s, the front's speed at %g s, the thickest point of the "
+                 "slide at %g s, and the wall time on 2 threads. `particleShifting` 0 is no shifting."
+                 % (end, " / ".join(times), end, end))
+    lines.append("")
+    if case == 1 and cfd:
         lines += ["slideFoam (H0/20 with H0/%d on the base, ../cfd/table1.json): %.1f m at 40 s, the front still "
                   "moving at %.1f m/s." % (20*cfd["refinement"], cfd["runout"], cfd["front_velocity"]), "",
                   "The row for 0 is numerics.py's rateFree variant (numerics.json).", ""]
     lines += ["| particleShifting | " + " | ".join("%dx%d" % (p, p) for p in ppcs) + " |",
               "|---|" + "---|"*len(ppcs)]
     for s in shifts:
-        cells = []
+        entries = []
         for p in ppcs:
             r = at.get((s, p))
             if r is None:
-                cells.append("-")
+                entries.append("-")
                 continue
             f = r["frontAt"]
-            cells.append("**%.1f m** (%s; %.2f m/s; %.0f s)" % (
-                r["runout"], " / ".join("%.1f" % f[t] if f.get(t) is not None else "-" for t in ("10", "20", "30")),
-                r["frontVelocity"], r["wall"]))
-        lines.append("| %g | %s |" % (s, " | ".join(cells)))
+            entries.append("**%.1f m** (%s; %.2f m/s; %s; %.0f s)" % (
+                r["runout"], " / ".join("%.1f" % f[t] if f.get(t) is not None else "-" for t in times),
+                r["frontVelocity"], "%.2f m thick" % r["maxThickness"] if r.get("maxThickness") else "-",
+                r["wall"]))
+        lines.append("| %g | %s |" % (s, " | ".join(entries)))
+    lines.append("")
+    for s in shifts:
+        runout = {p: at[(s, p)]["runout"] for p in ppcs if (s, p) in at}
+        for p in sorted(runout):
+            if 2*p not in runout or 4*p not in runout:
+                continue
+            pts = [(q, runout[q]) for q in (p, 2*p, 4*p)]
+            conv = convergence(pts)
+            if conv:
+                lines.append("- particleShifting %g, %dx%d to %dx%d: observed order %.2f in the particles per cell "
+                             "and direction, limit %.1f m (Richardson)." % (s, p, p, 4*p, 4*p, conv[0], conv[1]))
+            else:
+                lines.append("- particleShifting %g, %dx%d to %dx%d: the changes %s do not shrink monotonically: no "
+                             "limit read." % (s, p, p, 4*p, 4*p, " and ".join(
+                                 "%+.1f m" % (pts[i + 1][1] - pts[i][1]) for i in range(2))))
+    if lines[-1]:
+        lines.append("")
+    return lines
+
+
+def write(results):
+    results = unshifted() + results
+    cfd = slidefoam_rate_free()
+    cases = sorted({r["case"] for r in results})
+    lines = ["# Particle shifting: the runout against the particles per cell", "",
+             "Regenerated by `validation/mpm/shifting.py` (its docstring says why).", ""]
+    for c in cases:
+        lines += case_table(c, [r for r in results if r["case"] == c], cfd)
     out = os.path.join(here, "shifting.md")
     with open(out, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines))
     print("wrote %s" % out)
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    for s in shifts:
-        pts = [(p, at[(s, p)]["runout"]) for p in ppcs if (s, p) in at]
-        ax.plot([p for p, _ in pts], [v for _, v in pts], "o-", label="particleShifting %g" % s)
-    if cfd:
-        ax.axhline(cfd["runout"], color="k", ls="--", lw=1, label="slideFoam at 40 s (still moving)")
-    ax.set_xlabel("particles per cell and direction")
-    ax.set_ylabel("front at 40 s [m]")
-    ax.set_xticks(ppcs)
-    ax.set_title("slideMPM, rate-free Case 1, H0/20")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    fig, axes = plt.subplots(1, len(cases), figsize=(4.6*len(cases), 4.2), squeeze=False)
+    for ax, c in zip(axes[0], cases):
+        rows = [r for r in results if r["case"] == c]
+        at = {(r["shift"], r["ppc"]): r for r in rows}
+        ppcs = sorted({r["ppc"] for r in rows})
+        for s in sorted({r["shift"] for r in rows}):
+            pts = [(p, at[(s, p)]["runout"]) for p in ppcs if (s, p) in at]
+            ax.plot([p for p, _ in pts], [v for _, v in pts], "o-", label="particleShifting %g" % s)
+        if c == 1 and cfd:
+            ax.axhline(cfd["runout"], color="k", ls="--", lw=1, label="slideFoam at 40 s (still moving)")
+        ax.set_xscale("log", base=2)
+        ax.set_xticks(ppcs)
+        ax.set_xticklabels([str(p) for p in ppcs])
+        ax.set_xlabel("particles per cell and direction")
+        ax.set_ylabel("front at %g s [m]" % study(c)[1])
+        ax.set_title("slideMPM, %s Case %d, H0/%d" % ("rate-free" if c == 1 else "Table 1", c, study(c)[0]),
+                     fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
     fig.tight_layout()
     png = os.path.join(here, "shifting.png")
     fig.savefig(png, dpi=120)

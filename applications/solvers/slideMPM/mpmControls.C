@@ -36,9 +36,9 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     if (d.found("particlesPerCell"))
     {
         c.particlesPerCell = d.getLabel("particlesPerCell");
-        if (c.particlesPerCell < 1 || c.particlesPerCell > 8)
+        if (c.particlesPerCell < 1 || c.particlesPerCell > 32)
         {
-            d.fail("particlesPerCell", "particles per cell and direction must lie in [1, 8], got "
+            d.fail("particlesPerCell", "particles per cell and direction must lie in [1, 32], got "
                    + std::to_string(c.particlesPerCell));
         }
     }
