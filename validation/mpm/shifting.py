@@ -23,6 +23,7 @@ there. 2 threads, Case 1: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a r
 points; --import reads finished run directories named case<NN>_h<cells>_p<ppc>_k<shift> instead of running them)"""
 import argparse
 import json
+import math
 import os
 import re
 import sys
@@ -133,13 +134,18 @@ def unshifted():
     return out
 
 
+# A Richardson limit is read only where the observed order lies in this range: below it the changes hardly shrink,
+# and the extrapolation would add several times the last change on the strength of a pre-asymptotic ratio.
+MIN_ORDER, MAX_ORDER = 0.5, 4.0
+
+
 def convergence(values):
     """The observed order in the particles per cell of three values at doubling ppc, and the limit it gives
     (None where the differences do not shrink monotonically)."""
     (p1, a), (p2, b), (p3, c) = values
     if p2 != 2*p1 or p3 != 2*p2 or (b - a)*(c - b) <= 0 or abs(c - b) >= abs(b - a):
         return None
-    order = __import__("math").log2((b - a)/(c - b))
+    order = math.log2((b - a)/(c - b))
     return order, c + (c - b)/(2**order - 1)
 
 
@@ -181,7 +187,11 @@ def case_table(case, rows, cfd):
                 continue
             pts = [(q, runout[q]) for q in (p, 2*p, 4*p)]
             conv = convergence(pts)
-            if conv:
+            if conv and not MIN_ORDER <= conv[0] <= MAX_ORDER:
+                lines.append("- particleShifting %g, %dx%d to %dx%d: the changes %+.1f and %+.1f m, an observed order "
+                             "of %.2f: too far from the asymptotic range to extrapolate." % (
+                                 s, p, p, 4*p, 4*p, pts[1][1] - pts[0][1], pts[2][1] - pts[1][1], conv[0]))
+            elif conv:
                 lines.append("- particleShifting %g, %dx%d to %dx%d: observed order %.2f in the particles per cell "
                              "and direction, limit %.1f m (Richardson)." % (s, p, p, 4*p, 4*p, conv[0], conv[1]))
             else:
