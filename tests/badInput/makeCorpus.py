@@ -304,6 +304,8 @@ add("cfd-wall-function-papanastasiou", "Eq. (1)'s wall function with the Papanas
     len(cfd0) + 1, "rateWallFunction", "slideFoamCase")
 add("cfd-face-viscosity-not-bool", "face viscosities asked with a word that is not yes or no", "system/cfdDict",
     cfd0[:-1] + ["faceViscosity   faces;", ""], len(cfd0), "faceViscosity", "slideFoamCase")
+add("mpm-particles-per-cell-above", "64 x 64 particles per cell (beyond the 32 a convergence study in the particles "
+    "needs)", "system/mpmDict", mpm0[:-1] + ["particlesPerCell 64;", ""], len(mpm0), "particlesPerCell", "slideMPM")
 
 
 def main():
