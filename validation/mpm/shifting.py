@@ -15,8 +15,7 @@ shifting.md, shifting.json and shifting.png beside this script. Two studies:
   The question: does the front at 30 s converge in the particles per cell, with and without shifting, and to what?
   Both columns are run here.
 
-Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4,8] [--end-time T] [--stored]
-       [--import DIR ...]
+Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4,8] [--stored] [--import DIR ...]
 (For Case 1 the row without shifting is numerics.py's rateFree variant at H0/20, read from numerics.json: run it
 there. 2 threads, Case 1: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a run; Cases 10 and 13 to 30 s:
 4x4 about 30 s, 8x8 about 100 s, 16x16 about 7 minutes a run. A run keeps the stored results of the other
@@ -75,16 +74,12 @@ def main():
     ap.add_argument("--case", type=int, default=1, help="1: the rate-free Case 1; another: that Table 1 case")
     ap.add_argument("--shifts", default=None, help="default 0.01,0.03,0.1 (Case 1), 0,0.03 (another case)")
     ap.add_argument("--ppc", default=None, help="default 2,4,8 (Case 1), 4,8,16 (another case)")
-    ap.add_argument("--end-time", type=float, default=None, help="default 40 s (Case 1), 30 s (another case)")
     ap.add_argument("--stored", action="store_true", help="rewrite shifting.md and .png from shifting.json")
     ap.add_argument("--import", dest="imports", nargs="*", default=[],
                     help="finished run directories case<NN>_h<cells>_p<ppc>_k<shift> to store instead of running")
     args = ap.parse_args()
     case = args.case
     cells, end, scene, _, _ = study(case)
-    if args.end_time is not None and args.end_time != end:
-        raise SystemExit("shifting.py: --end-time: the study of Case %d is to %g s (the table compares at it)"
-                         % (case, end))
     shifts = args.shifts or ("0.01,0.03,0.1" if case == 1 else "0,0.03")
     ppcs = args.ppc or ("2,4,8" if case == 1 else "4,8,16")
     path = os.path.join(here, "shifting.json")
@@ -127,9 +122,10 @@ def unshifted():
     """numerics.py's rateFree rows at H0/20 to 40 s: Case 1's study without shifting."""
     path = os.path.join(here, "numerics.json")
     rows = json.load(open(path)) if os.path.isfile(path) else []
+    cells, end = study(1)[:2]
     out = []
     for r in rows:
-        if r["variant"] == "rateFree" and r["case"] == 1 and r["cells"] == 20 and r.get("endTimeCut") == 40.0:
+        if r["variant"] == "rateFree" and r["case"] == 1 and r["cells"] == cells and r.get("endTimeCut") == end:
             out.append(dict(r, shift=0.0, frontAt={t: r["frontAt"].get(t) for t in ("10", "20", "30")}))
     return out
 
