@@ -13,12 +13,15 @@ shifting.md, shifting.json and shifting.png beside this script. Two studies:
 - Any other Table 1 case (--case 10, --case 13): the case as tabled, Eq. (1) and remoulding, with Table 1's numerics
   (APIC, H0/10) to 30 s, by which the unshifted fronts of Cases 10 and 13 have stalled (README, open problem 3).
   The question: does the front at 30 s converge in the particles per cell, with and without shifting, and to what?
-  Both columns are run here.
+  Both columns are run here. --cells runs the study at other cells too (H0/5 and H0/20 were run at 8x8 with
+  shifting 0.03, the count that is within about 1 % of 16x16 at H0/10): does the front converge in the cell where
+  it has converged in the particles?
 
-Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4,8] [--stored] [--import DIR ...]
+Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4,8] [--cells 10]
+                                  [--stored] [--import DIR ...]
 (For Case 1 the row without shifting is numerics.py's rateFree variant at H0/20, read from numerics.json: run it
 there. 2 threads, Case 1: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a run; Cases 10 and 13 to 30 s:
-4x4 about 30 s, 8x8 about 100 s, 16x16 about 7 minutes a run. A run keeps the stored results of the other
+4x4 about 30 s, 8x8 about 100 s (H0/5 16 s, H0/20 about 15 minutes), 16x16 about 7 minutes a run. A run keeps the stored results of the other
 points; --import reads finished run directories named case<NN>_h<cells>_p<ppc>_k<shift> instead of running them)"""
 import argparse
 import json
@@ -74,6 +77,7 @@ def main():
     ap.add_argument("--case", type=int, default=1, help="1: the rate-free Case 1; another: that Table 1 case")
     ap.add_argument("--shifts", default=None, help="default 0.01,0.03,0.1 (Case 1), 0,0.03 (another case)")
     ap.add_argument("--ppc", default=None, help="default 2,4,8 (Case 1), 4,8,16 (another case)")
+    ap.add_argument("--cells", default=None, help="cells per H0, default the study's (20 for Case 1, else 10)")
     ap.add_argument("--stored", action="store_true", help="rewrite shifting.md and .png from shifting.json")
     ap.add_argument("--import", dest="imports", nargs="*", default=[],
                     help="finished run directories case<NN>_h<cells>_p<ppc>_k<shift> to store instead of running")
@@ -82,15 +86,16 @@ def main():
     cells, end, scene, _, _ = study(case)
     shifts = args.shifts or ("0.01,0.03,0.1" if case == 1 else "0,0.03")
     ppcs = args.ppc or ("2,4,8" if case == 1 else "4,8,16")
+    cell_list = [int(n) for n in args.cells.split(",")] if args.cells else [cells]
     path = os.path.join(here, "shifting.json")
     stored = json.load(open(path)) if os.path.isfile(path) else []
     new = []
     for d in args.imports:
         m = re.search(r"case(\d\d)_h(\d+)_p(\d+)_k([0-9.eE+-]+)$", d.rstrip("/"))
-        if not m or int(m.group(1)) != case or int(m.group(2)) != cells:
-            raise SystemExit("shifting.py: --import %s: not a run directory case%02d_h%d_p<ppc>_k<shift> of this "
-                             "study" % (d, case, cells))
-        res = case_result(case, cells, int(m.group(3)), d)
+        if not m or int(m.group(1)) != case:
+            raise SystemExit("shifting.py: --import %s: not a run directory case%02d_h<cells>_p<ppc>_k<shift> of "
+                             "this study" % (d, case))
+        res = case_result(case, int(m.group(2)), int(m.group(3)), d)
         if abs(res["endTime"] - end) > 1e-6 and not res["atRest"]:
             raise SystemExit("shifting.py: --import %s: ended at %g s, not the study's %g s" % (d, res["endTime"], end))
         new.append(row_of(res, float(m.group(4)), times_of(case)))
@@ -100,18 +105,18 @@ def main():
             if case == 1 and not shift > 0:
                 raise SystemExit("shifting.py: --shifts: Case 1's runs without shifting are numerics.py's rateFree "
                                  "variant")
-            for ppc in [int(p) for p in ppcs.split(",")]:
-                res = run_case(case, cells, ppc, work, numerics=numerics_of(case, shift), scene=scene,
+            for n, ppc in [(n, int(p)) for n in cell_list for p in ppcs.split(",")]:
+                res = run_case(case, n, ppc, work, numerics=numerics_of(case, shift), scene=scene,
                                tag="_k%g" % shift, end_time=end)
                 if "failed" in res:
-                    raise SystemExit("shifting.py: the run with shift %g, %dx%d failed:\n%s"
-                                     % (shift, ppc, ppc, res["failed"]))
+                    raise SystemExit("shifting.py: the run with shift %g, H0/%d, %dx%d failed:\n%s"
+                                     % (shift, n, ppc, ppc, res["failed"]))
                 new.append(row_of(res, shift, times_of(case)))
-                print("Case %d, shift %g, %dx%d: %.2f m at %g s, %.0f s wall" % (
-                    case, shift, ppc, ppc, new[-1]["runout"], new[-1]["endTime"], new[-1]["wall"]), flush=True)
-    keys = {(r["case"], r["shift"], r["ppc"]) for r in new}
-    results = sorted([r for r in stored if (r["case"], r["shift"], r["ppc"]) not in keys] + new,
-                     key=lambda r: (r["case"], r["shift"], r["ppc"]))
+                print("Case %d, shift %g, H0/%d, %dx%d: %.2f m at %g s, %.0f s wall" % (
+                    case, shift, n, ppc, ppc, new[-1]["runout"], new[-1]["endTime"], new[-1]["wall"]), flush=True)
+    key = lambda r: (r["case"], r["cells"], r["shift"], r["ppc"])
+    keys = {key(r) for r in new}
+    results = sorted([r for r in stored if key(r) not in keys] + new, key=key)
     if new:
         with open(path, "w") as f:
             json.dump(results, f, indent=1)
@@ -136,8 +141,8 @@ MIN_ORDER, MAX_ORDER = 0.5, 4.0
 
 
 def convergence(values):
-    """The observed order in the particles per cell of three values at doubling ppc, and the limit it gives
-    (None where the differences do not shrink monotonically)."""
+    """The observed order of three values at a doubling resolution (particles per cell, or cells per H0), and the
+    limit it gives (None where the differences do not shrink monotonically)."""
     (p1, a), (p2, b), (p3, c) = values
     if p2 != 2*p1 or p3 != 2*p2 or (b - a)*(c - b) <= 0 or abs(c - b) >= abs(b - a):
         return None
@@ -145,8 +150,64 @@ def convergence(values):
     return order, c + (c - b)/(2**order - 1)
 
 
-def case_table(case, rows, cfd):
+def limit_lines(label, runout, name, what):
+    """The Richardson line of the finest triplet at doubling resolution among runout {resolution: front}: a coarser
+    one holds the pre-asymptotic points (2x2's slide stops by 39 s)."""
+    finest = [q for q in sorted(runout, reverse=True) if 2*q in runout and 4*q in runout][:1]
+    lines = []
+    for p in finest:
+        pts = [(q, runout[q]) for q in (p, 2*p, 4*p)]
+        conv = convergence(pts)
+        span = "%s%s to %s" % (label, name(p), name(4*p))
+        if conv and not MIN_ORDER <= conv[0] <= MAX_ORDER:
+            lines.append("- %s: the changes %+.1f and %+.1f m, an observed order of %.2f: too far from the asymptotic "
+                         "range to extrapolate." % (span, pts[1][1] - pts[0][1], pts[2][1] - pts[1][1], conv[0]))
+        elif conv:
+            lines.append("- %s: observed order %.2f %s, limit %.1f m (Richardson)." % (span, conv[0], what, conv[1]))
+        else:
+            lines.append("- %s: the changes %s do not shrink monotonically: no limit read." % (span, " and ".join(
+                "%+.1f m" % (pts[i + 1][1] - pts[i][1]) for i in range(2))))
+    return lines
+
+
+def entry(r, times):
+    """A table entry: the front at the end, at the earlier times, its speed, the thickest point, the wall time."""
+    f = r["frontAt"]
+    return "**%.1f m** (%s; %.2f m/s; %s; %.0f s)" % (
+        r["runout"], " / ".join("%.1f" % f[t] if f.get(t) is not None else "-" for t in times), r["frontVelocity"],
+        "%.2f m thick" % r["maxThickness"] if r.get("maxThickness") else "-", r["wall"])
+
+
+def cell_table(case, rows):
+    """The front against the cell, at each shift and particle count run at more than one cell."""
+    end = study(case)[1]
+    times = [str(t) for t in times_of(case)]
+    sets = sorted({(r["shift"], r["ppc"]) for r in rows
+                   if len({q["cells"] for q in rows if (q["shift"], q["ppc"]) == (r["shift"], r["ppc"])}) > 1})
+    if not sets:
+        return []
+    cells = sorted({r["cells"] for r in rows if (r["shift"], r["ppc"]) in sets})
+    at = {(r["shift"], r["ppc"], r["cells"]): r for r in rows}
+    lines = ["", "The front at %g s against the cell (the same entries):" % end, "",
+             "| particleShifting, particles | " + " | ".join("H0/%d" % n for n in cells) + " |",
+             "|---|" + "---|"*len(cells)]
+    for s, p in sets:
+        entries = []
+        for n in cells:
+            r = at.get((s, p, n))
+            entries.append("-" if r is None else entry(r, times))
+        lines.append("| %g, %dx%d | %s |" % (s, p, p, " | ".join(entries)))
+    lines.append("")
+    for s, p in sets:
+        lines += limit_lines("particleShifting %g, %dx%d, " % (s, p, p),
+                             {n: at[(s, p, n)]["runout"] for n in cells if (s, p, n) in at},
+                             lambda n: "H0/%d" % n, "in the cell")
+    return lines
+
+
+def case_table(case, all_rows, cfd):
     cells, end, _, _, what = study(case)
+    rows = [r for r in all_rows if r["cells"] == cells]
     times = [str(t) for t in times_of(case)]
     shifts = sorted({r["shift"] for r in rows})
     ppcs = sorted({r["ppc"] for r in rows})
@@ -166,37 +227,25 @@ def case_table(case, rows, cfd):
         entries = []
         for p in ppcs:
             r = at.get((s, p))
-            if r is None:
-                entries.append("-")
-                continue
-            f = r["frontAt"]
-            entries.append("**%.1f m** (%s; %.2f m/s; %s; %.0f s)" % (
-                r["runout"], " / ".join("%.1f" % f[t] if f.get(t) is not None else "-" for t in times),
-                r["frontVelocity"], "%.2f m thick" % r["maxThickness"] if r.get("maxThickness") else "-",
-                r["wall"]))
+            entries.append("-" if r is None else entry(r, times))
         lines.append("| %g | %s |" % (s, " | ".join(entries)))
     lines.append("")
     for s in shifts:
-        runout = {p: at[(s, p)]["runout"] for p in ppcs if (s, p) in at}
-        # The finest triplet only: a coarser one holds the pre-asymptotic counts (2x2's slide stops by 39 s).
-        finest = [q for q in sorted(runout, reverse=True) if 2*q in runout and 4*q in runout][:1]
-        for p in finest:
-            pts = [(q, runout[q]) for q in (p, 2*p, 4*p)]
-            conv = convergence(pts)
-            if conv and not MIN_ORDER <= conv[0] <= MAX_ORDER:
-                lines.append("- particleShifting %g, %dx%d to %dx%d: the changes %+.1f and %+.1f m, an observed order "
-                             "of %.2f: too far from the asymptotic range to extrapolate." % (
-                                 s, p, p, 4*p, 4*p, pts[1][1] - pts[0][1], pts[2][1] - pts[1][1], conv[0]))
-            elif conv:
-                lines.append("- particleShifting %g, %dx%d to %dx%d: observed order %.2f in the particles per cell "
-                             "and direction, limit %.1f m (Richardson)." % (s, p, p, 4*p, 4*p, conv[0], conv[1]))
-            else:
-                lines.append("- particleShifting %g, %dx%d to %dx%d: the changes %s do not shrink monotonically: no "
-                             "limit read." % (s, p, p, 4*p, 4*p, " and ".join(
-                                 "%+.1f m" % (pts[i + 1][1] - pts[i][1]) for i in range(2))))
+        lines += limit_lines("particleShifting %g, " % s, {p: at[(s, p)]["runout"] for p in ppcs if (s, p) in at},
+                             lambda p: "%dx%d" % (p, p), "in the particles per cell and direction")
+    lines += cell_table(case, all_rows)
     if lines[-1]:
         lines.append("")
     return lines
+
+
+def log2_axis(ax, ticks, label):
+    ax.set_xscale("log", base=2)
+    ax.set_xticks(ticks)
+    ax.set_xticklabels([str(t) for t in ticks])
+    ax.set_xlabel(label)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
 
 
 def write(results):
@@ -214,9 +263,12 @@ def write(results):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(cases), figsize=(4.6*len(cases), 4.2), squeeze=False)
+    # A second row of panels for the cases run at more than one cell: the front against the cell.
+    multi = {c: sorted({r["cells"] for r in results if r["case"] == c}) for c in cases}
+    nrows = 2 if any(len(v) > 1 for v in multi.values()) else 1
+    fig, axes = plt.subplots(nrows, len(cases), figsize=(4.6*len(cases), 4.2*nrows), squeeze=False)
     for ax, c in zip(axes[0], cases):
-        rows = [r for r in results if r["case"] == c]
+        rows = [r for r in results if r["case"] == c and r["cells"] == study(c)[0]]
         at = {(r["shift"], r["ppc"]): r for r in rows}
         ppcs = sorted({r["ppc"] for r in rows})
         for s in sorted({r["shift"] for r in rows}):
@@ -224,15 +276,24 @@ def write(results):
             ax.plot([p for p, _ in pts], [v for _, v in pts], "o-", label="particleShifting %g" % s)
         if c == 1 and cfd:
             ax.axhline(cfd["runout"], color="k", ls="--", lw=1, label="slideFoam at 40 s (still moving)")
-        ax.set_xscale("log", base=2)
-        ax.set_xticks(ppcs)
-        ax.set_xticklabels([str(p) for p in ppcs])
-        ax.set_xlabel("particles per cell and direction")
+        log2_axis(ax, ppcs, "particles per cell and direction")
         ax.set_ylabel("front at %g s [m]" % study(c)[1])
         ax.set_title("slideMPM, %s Case %d, H0/%d" % ("rate-free" if c == 1 else "Table 1", c, study(c)[0]),
                      fontsize=9)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+    for ax, c in zip(axes[1] if nrows > 1 else [], cases):
+        rows = [r for r in results if r["case"] == c]
+        sets = sorted({(r["shift"], r["ppc"]) for r in rows})
+        if len(multi[c]) < 2:
+            ax.set_visible(False)
+            continue
+        for s, p in sets:
+            pts = sorted((r["cells"], r["runout"]) for r in rows if (r["shift"], r["ppc"]) == (s, p))
+            if len(pts) > 1:
+                ax.plot([n for n, _ in pts], [v for _, v in pts], "s-",
+                        label="particleShifting %g, %dx%d" % (s, p, p))
+        log2_axis(ax, multi[c], "cells per H0")
+        ax.set_ylabel("front at %g s [m]" % study(c)[1])
+        ax.set_title("slideMPM, Table 1 Case %d, against the cell" % c, fontsize=9)
     fig.tight_layout()
     png = os.path.join(here, "shifting.png")
     fig.savefig(png, dpi=120)
