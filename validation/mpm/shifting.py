@@ -21,8 +21,9 @@ Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4
                                   [--stored] [--import DIR ...]
 (For Case 1 the row without shifting is numerics.py's rateFree variant at H0/20, read from numerics.json: run it
 there. 2 threads, Case 1: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a run; Cases 10 and 13 to 30 s:
-4x4 about 30 s, 8x8 about 100 s (H0/5 16 s, H0/20 about 15 minutes), 16x16 about 7 minutes a run. A run keeps the stored results of the other
-points; --import reads finished run directories named case<NN>_h<cells>_p<ppc>_k<shift> instead of running them)"""
+4x4 about 30 s, 8x8 about 100 s (at H0/5 15 s, at H0/20 11-13 minutes), 16x16 about 7 minutes a run. A run keeps
+the stored results of the other points; --import reads finished run directories named
+case<NN>_h<cells>_p<ppc>_k<shift> instead of running them)"""
 import argparse
 import json
 import math
@@ -188,7 +189,7 @@ def cell_table(case, rows):
         return []
     cells = sorted({r["cells"] for r in rows if (r["shift"], r["ppc"]) in sets})
     at = {(r["shift"], r["ppc"], r["cells"]): r for r in rows}
-    lines = ["", "The front at %g s against the cell (the same entries):" % end, "",
+    lines = ["", "The front at %g s against the cell (each entry as above):" % end, "",
              "| particleShifting, particles | " + " | ".join("H0/%d" % n for n in cells) + " |",
              "|---|" + "---|"*len(cells)]
     for s, p in sets:
