@@ -16,14 +16,18 @@ shifting.md, shifting.json and shifting.png beside this script. Two studies:
   Both columns are run here. --cells runs the study at other cells too (H0/5 and H0/20 were run at 8x8 with
   shifting 0.03, the count that is within about 1 % of 16x16 at H0/10): does the front converge in the cell where
   it has converged in the particles?
+  --xi-per-cell runs the remoulding cases (10-13, whose tutorials count xi per shear band of H0/60) with xi counted
+  per cell instead (mpmDict shearBandThickness 0): is the band's scaling of xi with the cell what keeps Case 13 from
+  converging in the cell? Case 2 is Case 13 without remoulding (the same s_uo, rate term and slope), the same
+  question's control.
 
 Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4,8] [--cells 10]
-                                  [--stored] [--import DIR ...]
+                                  [--xi-per-cell] [--stored] [--import DIR ...]
 (For Case 1 the row without shifting is numerics.py's rateFree variant at H0/20, read from numerics.json: run it
 there. 2 threads, Case 1: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a run; Cases 10 and 13 to 30 s:
 4x4 about 30 s, 8x8 about 100 s (at H0/5 15 s, at H0/20 11-13 minutes), 16x16 about 7 minutes a run. A run keeps
 the stored results of the other points; --import reads finished run directories named
-case<NN>_h<cells>_p<ppc>_k<shift> instead of running them)"""
+case<NN>_h<cells>_p<ppc>_k<shift>[_cell] instead of running them)"""
 import argparse
 import json
 import math
@@ -44,19 +48,38 @@ def study(case):
     if case == 1:
         return (20, 40.0, CASE1_RATE_FREE_SCENE, {"transfer": "quadratic", **RATE_FREE_CLAY},
                 "the rate-free Case 1 (no rate term, s_uo 225 Pa), quadratic transfer, H0/20")
-    return (10, 30.0, None, {}, "Table 1 Case %d as tabled (Eq. (1), remoulding), APIC, H0/10" % case)
+    return (10, 30.0, None, {}, "Table 1 Case %d as tabled (Eq. (1)%s), APIC, H0/10"
+            % (case, ", remoulding" if remoulds(case) else ", no remoulding"))
 
 
-def numerics_of(case, shift):
+def remoulds(case):
+    """Whether the case's scene remoulds (deltaRem < 1 in its constant/sceneProperties)."""
+    path = os.path.join(here, "..", "..", "tutorials", "table1", "case%02d" % case, "constant", "sceneProperties")
+    m = re.search(r"^\s*deltaRem\s+([0-9.eE+-]+)\s*;", open(path).read(), re.M)
+    return bool(m) and float(m.group(1)) < 1
+
+
+def numerics_of(case, shift, xi_per_cell=False):
     num = dict(study(case)[3])
     if shift > 0:
         num["particleShifting"] = shift
+    if xi_per_cell:
+        num["shearBandThickness"] = 0
     return num
 
 
-def row_of(res, shift, times):
+def counts_bands(case):
+    """Whether the case's tutorial counts xi per shear band (a shearBandThickness > 0 in its mpmDict)."""
+    path = os.path.join(here, "..", "..", "tutorials", "table1", "case%02d" % case, "system", "mpmDict")
+    m = re.search(r"^\s*shearBandThickness\s+([0-9.eE+-]+)\s*;", open(path).read(), re.M)
+    return bool(m) and float(m.group(1)) > 0
+
+
+def row_of(res, shift, times, xi_per_cell=False):
     history = res.pop("history", None) or []
     res["shift"] = shift
+    if xi_per_cell:
+        res["xiPerCell"] = True
     res["frontAt"] = front_at(history, times)
     return res
 
@@ -79,12 +102,18 @@ def main():
     ap.add_argument("--shifts", default=None, help="default 0.01,0.03,0.1 (Case 1), 0,0.03 (another case)")
     ap.add_argument("--ppc", default=None, help="default 2,4,8 (Case 1), 4,8,16 (another case)")
     ap.add_argument("--cells", default=None, help="cells per H0, default the study's (20 for Case 1, else 10)")
+    ap.add_argument("--xi-per-cell", action="store_true",
+                    help="count xi per cell, not per the tutorial's shear band (Cases 10-13)")
     ap.add_argument("--stored", action="store_true", help="rewrite shifting.md and .png from shifting.json")
     ap.add_argument("--import", dest="imports", nargs="*", default=[],
                     help="finished run directories case<NN>_h<cells>_p<ppc>_k<shift> to store instead of running")
     args = ap.parse_args()
     case = args.case
     cells, end, scene, _, _ = study(case)
+    per_cell = args.xi_per_cell
+    if per_cell and not counts_bands(case):
+        raise SystemExit("shifting.py: --xi-per-cell: Case %d's tutorial counts xi per cell already (no "
+                         "shearBandThickness in its system/mpmDict)" % case)
     shifts = args.shifts or ("0.01,0.03,0.1" if case == 1 else "0,0.03")
     ppcs = args.ppc or ("2,4,8" if case == 1 else "4,8,16")
     cell_list = [int(n) for n in args.cells.split(",")] if args.cells else [cells]
@@ -92,14 +121,18 @@ def main():
     stored = json.load(open(path)) if os.path.isfile(path) else []
     new = []
     for d in args.imports:
-        m = re.search(r"case(\d\d)_h(\d+)_p(\d+)_k([0-9.eE+-]+)$", d.rstrip("/"))
+        m = re.search(r"case(\d\d)_h(\d+)_p(\d+)_k([0-9.eE+-]+?)(_cell)?$", d.rstrip("/"))
         if not m or int(m.group(1)) != case:
-            raise SystemExit("shifting.py: --import %s: not a run directory case%02d_h<cells>_p<ppc>_k<shift> of "
-                             "this study" % (d, case))
+            raise SystemExit("shifting.py: --import %s: not a run directory case%02d_h<cells>_p<ppc>_k<shift>[_cell] "
+                             "of this study" % (d, case))
+        if bool(m.group(5)) != per_cell:
+            raise SystemExit("shifting.py: --import %s: %s, so %s --xi-per-cell" % (
+                d, "xi per cell (_cell)" if m.group(5) else "xi as the tutorial counts it",
+                "with" if m.group(5) else "without"))
         res = case_result(case, int(m.group(2)), int(m.group(3)), d)
         if abs(res["endTime"] - end) > 1e-6 and not res["atRest"]:
             raise SystemExit("shifting.py: --import %s: ended at %g s, not the study's %g s" % (d, res["endTime"], end))
-        new.append(row_of(res, float(m.group(4)), times_of(case)))
+        new.append(row_of(res, float(m.group(4)), times_of(case), per_cell))
     if not args.stored and not args.imports:
         work = tempfile.mkdtemp(prefix="slideMPM_shifting_")
         for shift in [float(s) for s in shifts.split(",")]:
@@ -107,15 +140,15 @@ def main():
                 raise SystemExit("shifting.py: --shifts: Case 1's runs without shifting are numerics.py's rateFree "
                                  "variant")
             for n, ppc in [(n, int(p)) for n in cell_list for p in ppcs.split(",")]:
-                res = run_case(case, n, ppc, work, numerics=numerics_of(case, shift), scene=scene,
-                               tag="_k%g" % shift, end_time=end)
+                res = run_case(case, n, ppc, work, numerics=numerics_of(case, shift, per_cell), scene=scene,
+                               tag="_k%g%s" % (shift, "_cell" if per_cell else ""), end_time=end)
                 if "failed" in res:
                     raise SystemExit("shifting.py: the run with shift %g, H0/%d, %dx%d failed:\n%s"
                                      % (shift, n, ppc, ppc, res["failed"]))
-                new.append(row_of(res, shift, times_of(case)))
+                new.append(row_of(res, shift, times_of(case), per_cell))
                 print("Case %d, shift %g, H0/%d, %dx%d: %.2f m at %g s, %.0f s wall" % (
                     case, shift, n, ppc, ppc, new[-1]["runout"], new[-1]["endTime"], new[-1]["wall"]), flush=True)
-    key = lambda r: (r["case"], r["cells"], r["shift"], r["ppc"])
+    key = lambda r: (r["case"], r["cells"], r["shift"], r["ppc"], r.get("xiPerCell", False))
     keys = {key(r) for r in new}
     results = sorted([r for r in stored if key(r) not in keys] + new, key=key)
     if new:
@@ -179,36 +212,49 @@ def entry(r, times):
         "%.2f m thick" % r["maxThickness"] if r.get("maxThickness") else "-", r["wall"])
 
 
+def series_of(r):
+    """A row's series in the cell: its shift, particles per cell and whether xi was counted per cell."""
+    return r["shift"], r["ppc"], r.get("xiPerCell", False)
+
+
+def series_label(series):
+    s, p, per_cell = series
+    return "%g, %dx%d%s" % (s, p, p, ", xi per cell" if per_cell else "")
+
+
 def cell_table(case, rows):
-    """The front against the cell, at each shift and particle count run at more than one cell."""
+    """The front against the cell, for each series run at more than one cell."""
     end = study(case)[1]
     times = [str(t) for t in times_of(case)]
-    sets = sorted({(r["shift"], r["ppc"]) for r in rows
-                   if len({q["cells"] for q in rows if (q["shift"], q["ppc"]) == (r["shift"], r["ppc"])}) > 1})
+    sets = sorted({series_of(r) for r in rows
+                   if len({q["cells"] for q in rows if series_of(q) == series_of(r)}) > 1})
     if not sets:
         return []
-    cells = sorted({r["cells"] for r in rows if (r["shift"], r["ppc"]) in sets})
-    at = {(r["shift"], r["ppc"], r["cells"]): r for r in rows}
-    lines = ["", "The front at %g s against the cell (each entry as above):" % end, "",
+    cells = sorted({r["cells"] for r in rows if series_of(r) in sets})
+    at = {series_of(r) + (r["cells"],): r for r in rows}
+    per_cell = any(series[2] for series in sets)
+    lines = ["", "The front at %g s against the cell (each entry as above%s):" % (
+                 end, "; \"xi per cell\": mpmDict shearBandThickness 0, where the tutorial counts the strain of a "
+                      "band of H0/60" if per_cell else ""), "",
              "| particleShifting, particles | " + " | ".join("H0/%d" % n for n in cells) + " |",
              "|---|" + "---|"*len(cells)]
-    for s, p in sets:
+    for series in sets:
         entries = []
         for n in cells:
-            r = at.get((s, p, n))
+            r = at.get(series + (n,))
             entries.append("-" if r is None else entry(r, times))
-        lines.append("| %g, %dx%d | %s |" % (s, p, p, " | ".join(entries)))
+        lines.append("| %s | %s |" % (series_label(series), " | ".join(entries)))
     lines.append("")
-    for s, p in sets:
-        lines += limit_lines("particleShifting %g, %dx%d, " % (s, p, p),
-                             {n: at[(s, p, n)]["runout"] for n in cells if (s, p, n) in at},
+    for series in sets:
+        lines += limit_lines("particleShifting %s, " % series_label(series),
+                             {n: at[series + (n,)]["runout"] for n in cells if series + (n,) in at},
                              lambda n: "H0/%d" % n, "in the cell")
     return lines
 
 
 def case_table(case, all_rows, cfd):
     cells, end, _, _, what = study(case)
-    rows = [r for r in all_rows if r["cells"] == cells]
+    rows = [r for r in all_rows if r["cells"] == cells and not r.get("xiPerCell")]
     times = [str(t) for t in times_of(case)]
     shifts = sorted({r["shift"] for r in rows})
     ppcs = sorted({r["ppc"] for r in rows})
@@ -269,7 +315,7 @@ def write(results):
     nrows = 2 if any(len(v) > 1 for v in multi.values()) else 1
     fig, axes = plt.subplots(nrows, len(cases), figsize=(4.6*len(cases), 4.2*nrows), squeeze=False)
     for ax, c in zip(axes[0], cases):
-        rows = [r for r in results if r["case"] == c and r["cells"] == study(c)[0]]
+        rows = [r for r in results if r["case"] == c and r["cells"] == study(c)[0] and not r.get("xiPerCell")]
         at = {(r["shift"], r["ppc"]): r for r in rows}
         ppcs = sorted({r["ppc"] for r in rows})
         for s in sorted({r["shift"] for r in rows}):
@@ -283,15 +329,15 @@ def write(results):
                      fontsize=9)
     for ax, c in zip(axes[1] if nrows > 1 else [], cases):
         rows = [r for r in results if r["case"] == c]
-        sets = sorted({(r["shift"], r["ppc"]) for r in rows})
+        sets = sorted({series_of(r) for r in rows})
         if len(multi[c]) < 2:
             ax.set_visible(False)
             continue
-        for s, p in sets:
-            pts = sorted((r["cells"], r["runout"]) for r in rows if (r["shift"], r["ppc"]) == (s, p))
+        for series in sets:
+            pts = sorted((r["cells"], r["runout"]) for r in rows if series_of(r) == series)
             if len(pts) > 1:
-                ax.plot([n for n, _ in pts], [v for _, v in pts], "s-",
-                        label="particleShifting %g, %dx%d" % (s, p, p))
+                ax.plot([n for n, _ in pts], [v for _, v in pts], "^--" if series[2] else "s-",
+                        label="particleShifting %s" % series_label(series))
         log2_axis(ax, multi[c], "cells per H0")
         ax.set_ylabel("front at %g s [m]" % study(c)[1])
         ax.set_title("slideMPM, Table 1 Case %d, against the cell" % c, fontsize=9)
