@@ -25,7 +25,8 @@ Usage: validation/mpm/shifting.py [--case 1] [--shifts 0.01,0.03,0.1] [--ppc 2,4
                                   [--xi-per-cell] [--stored] [--import DIR ...]
 (For Case 1 the row without shifting is numerics.py's rateFree variant at H0/20, read from numerics.json: run it
 there. 2 threads, Case 1: 2x2 1-3 minutes, 4x4 3-4 minutes, 8x8 8-10 minutes a run; Cases 10 and 13 to 30 s:
-4x4 about 30 s, 8x8 about 100 s (at H0/5 15 s, at H0/20 11-13 minutes), 16x16 about 7 minutes a run. A run keeps
+4x4 about 30 s (at H0/20 2-4 minutes, at H0/40 18-30 minutes), 8x8 about 100 s (at H0/5 15 s, at H0/20
+11-13 minutes), 16x16 about 7 minutes a run. A run keeps
 the stored results of the other points; --import reads finished run directories named
 case<NN>_h<cells>_p<ppc>_k<shift>[_cell] instead of running them)"""
 import argparse
