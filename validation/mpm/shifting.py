@@ -341,7 +341,7 @@ def write(results):
                         label="particleShifting %s" % series_label(series))
         log2_axis(ax, multi[c], "cells per H0")
         ax.set_ylabel("front at %g s [m]" % study(c)[1])
-        ax.set_title("slideMPM, Table 1 Case %d, against the cell" % c, fontsize=9)
+        ax.set_title("slideMPM, %s Case %d, against the cell" % ("rate-free" if c == 1 else "Table 1", c), fontsize=9)
     fig.tight_layout()
     png = os.path.join(here, "shifting.png")
     fig.savefig(png, dpi=120)
