@@ -42,6 +42,7 @@ sys.path.insert(0, here)
 from table1 import run_case, case_result, front_at  # noqa: E402
 from numerics import RATE_FREE_CLAY  # noqa: E402
 from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
+from cfdcase import get_entry  # noqa: E402
 
 
 def study(case):
@@ -53,11 +54,14 @@ def study(case):
             % (case, ", remoulding" if remoulds(case) else ", no remoulding"))
 
 
+def tutorial_entry(case, dictionary, key):
+    """A number of the case's tutorial (dictionary: constant/sceneProperties, system/mpmDict), or None."""
+    return get_entry(os.path.join(here, "..", "..", "tutorials", "table1", "case%02d" % case, dictionary), key)
+
+
 def remoulds(case):
-    """Whether the case's scene remoulds (deltaRem < 1 in its constant/sceneProperties)."""
-    path = os.path.join(here, "..", "..", "tutorials", "table1", "case%02d" % case, "constant", "sceneProperties")
-    m = re.search(r"^\s*deltaRem\s+([0-9.eE+-]+)\s*;", open(path).read(), re.M)
-    return bool(m) and float(m.group(1)) < 1
+    """Whether the case's scene remoulds (deltaRem < 1)."""
+    return (tutorial_entry(case, "constant/sceneProperties", "deltaRem") or 1) < 1
 
 
 def numerics_of(case, shift, xi_per_cell=False):
@@ -71,9 +75,7 @@ def numerics_of(case, shift, xi_per_cell=False):
 
 def counts_bands(case):
     """Whether the case's tutorial counts xi per shear band (a shearBandThickness > 0 in its mpmDict)."""
-    path = os.path.join(here, "..", "..", "tutorials", "table1", "case%02d" % case, "system", "mpmDict")
-    m = re.search(r"^\s*shearBandThickness\s+([0-9.eE+-]+)\s*;", open(path).read(), re.M)
-    return bool(m) and float(m.group(1)) > 0
+    return (tutorial_entry(case, "system/mpmDict", "shearBandThickness") or 0) > 0
 
 
 def row_of(res, shift, times, xi_per_cell=False):
