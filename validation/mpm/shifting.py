@@ -151,7 +151,7 @@ def main():
                 new.append(row_of(res, shift, times_of(case), per_cell))
                 print("Case %d, shift %g, H0/%d, %dx%d: %.2f m at %g s, %.0f s wall" % (
                     case, shift, n, ppc, ppc, new[-1]["runout"], new[-1]["endTime"], new[-1]["wall"]), flush=True)
-    key = lambda r: (r["case"], r["cells"], r["shift"], r["ppc"], r.get("xiPerCell", False))
+    key = lambda r: (r["case"], r["cells"]) + series_of(r)
     keys = {key(r) for r in new}
     results = sorted([r for r in stored if key(r) not in keys] + new, key=key)
     if new:
