@@ -3,8 +3,9 @@
 #include "dictionary.H"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,28 +22,27 @@ namespace output
 namespace
 {
 
-// x as a C99 hexadecimal float ("-0x1.8p+1", exact, read back by strtod) and a
-// newline. std::to_chars writes what printf's %a does at a fifth of the cost
-// (the state of a 420 000-particle run is 10 million numbers per write), but
-// without the 0x.
-void appendHexFloat(std::string& out, const double x)
+// The first line of a state file. A state holds every particle (10 million
+// numbers a write for a 420 000-particle run): as raw doubles it is written
+// less than half the size and about five times faster than as the hexadecimal
+// floats of the states before session 59, which read() still takes.
+const char* const binaryHeader =
+    "// SlideFoam restart state: lines 'key count', each followed by count 8-byte IEEE doubles, little-endian";
+
+bool hostIsLittleEndian()
 {
-    char buf[40];
-    char* p = buf;
-    double a = x;
-    if (std::isfinite(x))
-    {
-        if (std::signbit(x))
-        {
-            *p++ = '-';
-            a = -x;
-        }
-        *p++ = '0';
-        *p++ = 'x';
-    }
-    p = std::to_chars(p, buf + sizeof buf - 1, a, std::chars_format::hex).ptr;
-    *p++ = '\n';
-    out.append(buf, p);
+    const std::uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first == 1;
+}
+
+void swapBytes(double& x)
+{
+    unsigned char b[sizeof(double)];
+    std::memcpy(b, &x, sizeof b);
+    std::reverse(b, b + sizeof b);
+    std::memcpy(&x, b, sizeof b);
 }
 
 } // namespace
@@ -58,17 +58,18 @@ void StateFile::write(const std::string& path) const
     fs::create_directories(fs::path(path).parent_path());
     const std::string tmp = path + ".tmp";
     {
-        std::ofstream os(tmp);
+        std::ofstream os(tmp, std::ios::binary);
         if (!os) throw std::runtime_error("cannot write " + tmp);
-        os << "// SlideFoam restart state: key, count, values as hexadecimal floats\n";
-        std::string text;
+        os << binaryHeader << '\n';
+        std::vector<double> raw;
         for (const std::string& key : order_)
         {
             const std::vector<double>& v = data_.at(key);
-            text = key + ' ' + std::to_string(v.size()) + '\n';
-            text.reserve(text.size() + 26*v.size());
-            for (double x : v) appendHexFloat(text, x);
-            os.write(text.data(), static_cast<std::streamsize>(text.size()));
+            os << key << ' ' << v.size() << '\n';
+            raw = v;
+            if (!hostIsLittleEndian()) for (double& x : raw) swapBytes(x);
+            os.write(reinterpret_cast<const char*>(raw.data()), static_cast<std::streamsize>(raw.size()*sizeof(double)));
+            os << '\n';
         }
         if (!os) throw std::runtime_error("cannot write " + tmp);
     }
@@ -77,14 +78,36 @@ void StateFile::write(const std::string& path) const
 
 StateFile StateFile::read(const std::string& path)
 {
-    std::ifstream is(path);
+    std::ifstream is(path, std::ios::binary);
     if (!is) throw scene::InputError(path, 0, "", "no restart state: the file cannot be read");
     StateFile f;
     f.path_ = path;
     std::string line;
-    int lineNo = 0;
     std::getline(is, line);
-    ++lineNo;
+    if (line == binaryHeader)
+    {
+        // key count, newline, count raw doubles, newline; line numbers count the key lines.
+        int lineNo = 1;
+        std::string key;
+        std::size_t n = 0;
+        while (is >> key >> n)
+        {
+            ++lineNo;
+            if (is.get() != '\n' || n > (std::size_t(1) << 34))
+            {
+                throw scene::InputError(path, lineNo, key, "unreadable restart state: not 'key count' on this line");
+            }
+            std::vector<double> v(n);
+            is.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n*sizeof(double)));
+            if (!is || is.get() != '\n') throw scene::InputError(path, lineNo, key, "truncated restart state");
+            if (!hostIsLittleEndian()) for (double& x : v) swapBytes(x);
+            f.add(key, v);
+        }
+        if (!is.eof()) throw scene::InputError(path, lineNo, key, "unreadable restart state after this entry");
+        return f;
+    }
+    // States written before session 59: one hexadecimal float per line.
+    int lineNo = 1;
     std::string key;
     std::size_t n = 0;
     while (is >> key >> n)

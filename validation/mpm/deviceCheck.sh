@@ -18,8 +18,8 @@
 # OUTDIR gets machine.txt, sceneTests.log, the runs' logs and summaries
 # (deviceBenchmark.sh) and results.txt, one line per run; each phase has its
 # own time limit so that a slow one leaves the others their time; a smoke run
-# that hangs ends the check with cuda-gdb's view of where. OPENMP=no leaves out
-# the OpenMP runs.
+# that hangs ends the check with cuda-gdb's view of where. PROFILE=no leaves out
+# the kernel times (ncu, profile.log); OPENMP=no leaves out the OpenMP runs.
 set -u
 bin="$(cd "$1" && pwd)"; out="$2"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -67,6 +67,25 @@ echo "== CUDA scene tests"
 start=$SECONDS
 timeout "${TEST_TIMEOUT:-150}" "$bin/mpmSceneTest-cuda" > "$out/sceneTests.log" 2>&1
 echo "exit $? after $((SECONDS - start)) s"; grep -E '^\[  (PASSED|FAILED) |^\[==========\]' "$out/sceneTests.log"
+
+if [ "${PROFILE:-yes}" = yes ] && command -v ncu > /dev/null; then
+    # Where a step's GPU time goes: each kernel's duration (one metric, so one
+    # pass per launch) over PROFILE_LAUNCHES launches of the flume at
+    # PROFILE_SETUP (CELLSxPPC, default 30x4) after the first PROFILE_SKIP
+    # (set-up and the first steps).
+    psetup="${PROFILE_SETUP:-30x4}"
+    echo "== CUDA kernel times (ncu, flume $psetup)"
+    prof="$(mktemp -d)"
+    cp -r "$here/../../tutorials/kroneWrightRun15" "$prof/case"
+    rm -rf "$prof/case/postProcessing" "$prof/case"/log.*
+    printf 'setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\nwriteFields no;\nprogressInterval 30;\n' \
+        "${psetup%x*}" "${psetup#*x}" > "$prof/case/system/mpmDict"
+    sed -i "s/^endTime .*/endTime 0.5;/" "$prof/case/system/controlDict"
+    timeout "${PROFILE_TIMEOUT:-90}" ncu --clock-control none --metrics gpu__time_duration.sum \
+        --launch-skip "${PROFILE_SKIP:-2000}" --launch-count "${PROFILE_LAUNCHES:-400}" --print-summary per-kernel \
+        "$bin/slideMPM-cuda" -case "$prof/case" > "$out/profile.log" 2>&1
+    echo "exit $?"; grep -v '^==PROF==' "$out/profile.log" | cut -c1-160 | tail -50
+fi
 
 [ "${OPENMP:-yes}" = no ] && exit 0
 echo "== OpenMP runs ($(nproc) threads)"

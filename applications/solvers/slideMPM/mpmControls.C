@@ -13,7 +13,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
                       "poissonRatio", "volumetricLocking", "stressQuadrature", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "particleShifting", "writeFields", "writeState",
-                      "purgeState", "progressInterval"});
+                      "purgeState", "progressInterval", "phaseTimes"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
     if (c.setting == "fast")
@@ -131,6 +131,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.progressInterval = d.getScalarInRange("progressInterval", 0.0, 1e6, true, true, "progress interval [s]");
     }
+    c.phaseTimes = d.getBool("phaseTimes", false);
     return c;
 }
 

@@ -141,9 +141,14 @@ int main(int argc, char** argv)
         mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points, rows);
         output::RunoutSample last;
         output::StatePurge purge(caseDir, "slideMPM", controls.statesKept(rc.purgeWrite));
-        auto write = [&](double t, bool logRow = true)
+        std::unique_ptr<mpm::PhaseTimes> times(controls.phaseTimes ? new mpm::PhaseTimes : nullptr);
+        // `copied`: the particles already copied to the host at this time (their copy
+        // is the largest part of a write on a GPU), else copied here.
+        auto write = [&](double t, bool logRow = true, const mpm::HostPoints* copied = nullptr)
         {
-            const mpm::HostPoints hp(points);
+            if (times) times->lap(mpm::PhaseTimes::hostWork);
+            struct Lap { mpm::PhaseTimes* t; ~Lap() { if (t) t->lap(mpm::PhaseTimes::output); } } lap{times.get()};
+            const mpm::HostPoints hp = copied ? *copied : mpm::HostPoints(points);
             last = mpm::runoutSample(hp, frame, t, initialFront, d);
             if (!logRow) return hp;
             log.write(last);
@@ -158,6 +163,7 @@ int main(int argc, char** argv)
             return hp;
         };
 
+        const long long firstStep = step;
         output::Progress progress(t, rc.endTime, controls.progressInterval);
         write(t, restartAt <= 0.0);   // a restart only needs `last`: its row is in runout.dat
         progress.report(t, step, true, "front = " + std::to_string(last.front) + " m");
@@ -185,6 +191,7 @@ int main(int argc, char** argv)
         bool warnedPastBase = false;
         while (schedule.running(t))
         {
+            if (times) times->lap(mpm::PhaseTimes::hostWork);
             if (!grid.fit(stats.xmin, stats.xmax, stats.ymin, stats.ymax, gridBudget))
             {
                 std::ostringstream os;
@@ -193,6 +200,7 @@ int main(int argc, char** argv)
                    << "than is free";
                 throw output::BlowUp(t, "the particle cloud", "grid extent", os.str());
             }
+            if (times) times->lap(mpm::PhaseTimes::gridFit);
             if (step > 0 && step % mpm::sortInterval == 0)
             {
                 const long long added = splitting.split(points, grid, frame.level, maxParticles);
@@ -204,12 +212,14 @@ int main(int argc, char** argv)
                        << "in system/mpmDict; the last good state is the one written at t = " << last.time << " s";
                     throw output::BlowUp(t, "the particle cloud", "particle count", os.str());
                 }
+                if (times) times->lap(mpm::PhaseTimes::splitting);
                 points.sortByCell(grid);
+                if (times) times->lap(mpm::PhaseTimes::sorting);
             }
             const output::WriteSchedule::Step s = schedule.clip(t, integrator.timeStep(d, stats.maxSpeed));
             const bool confirming = restPending;   // the step after rest was seen unrecorded
             const bool recorded = s.landing || confirming;
-            const mpm::StepStatistics next = integrator.step(points, grid, s.dt, recorded);
+            const mpm::StepStatistics next = integrator.step(points, grid, s.dt, recorded, times.get());
             ++step;
             t = s.time;
             boundaryWork += next.boundaryWork;
@@ -266,8 +276,9 @@ int main(int argc, char** argv)
             {
                 // The schedule and the mechanism first, so that the state written holds them.
                 schedule.next();
-                mechanisms.emplace_back(t, mpm::detectMechanism(mpm::HostPoints(points), frame, H0, sc.g, d, sc.rheology).name);
-                write(t);
+                const mpm::HostPoints hp(points);
+                mechanisms.emplace_back(t, mpm::detectMechanism(hp, frame, H0, sc.g, d, sc.rheology).name);
+                write(t, true, &hp);
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << last.front << " m  U_front = " << last.frontVelocity
                       << " m/s  |U|max = " << last.maxVelocity << " m/s";
@@ -327,6 +338,12 @@ int main(int argc, char** argv)
         }
         output::addMechanism(summary, mechanisms, mech, atRest, H0);
         summary.write(caseDir);
+        if (times)
+        {
+            times->lap(mpm::PhaseTimes::hostWork);
+            std::cout << "\n";
+            times->print(std::cout, step - firstStep);
+        }
 
         std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
                   << (atRest ? "at rest" : "still moving") << "), mechanism: "

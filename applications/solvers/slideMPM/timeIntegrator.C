@@ -466,7 +466,7 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
 {
     // contribute() adds into the view (the duplicates on OpenMP, the view itself
     // with CUDA atomics): both are zeroed first.
-    Kokkos::deep_copy(grid.nodal, 0.0);
+    zeroInStream(grid.nodal);
     grid.nodalScatter.reset_except(grid.nodal);
     ParticleToGrid f;
     static_cast<TransferSetup&>(f) = TransferSetup(mp, grid, dt, controls_.transfer, fittedBase_);
@@ -482,7 +482,7 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     f.fill = fittedBase_ && controls_.baseContact == MpmControls::BaseContact::touching;
     if (f.fill)
     {
-        Kokkos::deep_copy(grid.baseFill, 0.0);
+        zeroInStream(grid.baseFill);
         grid.baseFillScatter.reset_except(grid.baseFill);
         f.baseFill = grid.baseFillScatter;
         f.size = mp.size;
@@ -490,7 +490,7 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     f.scaleRowAbove = fittedBase_ && controls_.baseRowMassScaling;
     if (f.scaleRowAbove)
     {
-        Kokkos::deep_copy(grid.rowAboveBase, 0.0);
+        zeroInStream(grid.rowAboveBase);
         grid.rowAboveBaseScatter.reset_except(grid.rowAboveBase);
         f.rowAbove = grid.rowAboveBaseScatter;
         f.modulus = clay_.constrainedModulus();
@@ -509,7 +509,7 @@ void TimeIntegrator::averageCellPressure(const MaterialPoints& mp, BackgroundGri
     {
         cellPressureTerms(sig, V, p, a, b);
     });
-    Kokkos::deep_copy(grid.pressureSums, grid.averaging);
+    Kokkos::deep_copy(ExecutionSpace(), grid.pressureSums, grid.averaging);
     cellMeans(grid.pressureSums);
     grid.pressureSumsCurrent = true;
 }
@@ -725,7 +725,7 @@ StepStatistics TimeIntegrator::gridToParticle(MaterialPoints& mp, BackgroundGrid
     f.average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
     if (f.average)
     {
-        Kokkos::deep_copy(grid.averaging, 0.0);
+        zeroInStream(grid.averaging);
         grid.averagingScatter.reset_except(grid.averaging);
         f.cellDilatation = grid.averagingScatter;
     }
@@ -765,7 +765,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     // The next step's B-bar pressure, summed here where the stress and the new place are at hand.
     if (average)
     {
-        Kokkos::deep_copy(grid.pressureSums, 0.0);
+        zeroInStream(grid.pressureSums);
         grid.pressureSumsScatter.reset_except(grid.pressureSums);
     }
     auto pressureScatter = grid.pressureSumsScatter;
@@ -862,14 +862,19 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     }
 }
 
-StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, const double dt, const bool record) const
+StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, const double dt, const bool record,
+                                    PhaseTimes* times) const
 {
     particleToGrid(mp, grid, dt);
+    if (times) times->lap(PhaseTimes::particleToGrid);
     const double boundaryWork = updateGrid(grid, dt);
     if (shifting()) shiftField(grid);
+    if (times) times->lap(PhaseTimes::gridUpdate);
     StepStatistics s = gridToParticle(mp, grid, dt);
     s.boundaryWork = boundaryWork;
+    if (times) times->lap(PhaseTimes::gridToParticle);
     updateStress(mp, grid, dt, record);
+    if (times) times->lap(PhaseTimes::stressUpdate);
     return s;
 }
 

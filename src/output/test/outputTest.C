@@ -38,7 +38,7 @@ fs::path freshDir(const std::string& name)
 
 } // namespace
 
-TEST(RestartState, HexFloatsRoundTripBitForBit)
+TEST(RestartState, ValuesRoundTripBitForBit)
 {
     // Restarts must continue bit-identically: every double, signed zeros,
     // subnormals and the extremes included, comes back exactly.
@@ -50,6 +50,7 @@ TEST(RestartState, HexFloatsRoundTripBitForBit)
     StateFile f;
     f.add("values", values);
     f.add("time", {4.1});
+    f.add("none", std::vector<double>{});
     f.write((d/"x.state").string());
     const StateFile g = StateFile::read((d/"x.state").string());
     const std::vector<double>& back = g.vector("values");
@@ -59,7 +60,52 @@ TEST(RestartState, HexFloatsRoundTripBitForBit)
         EXPECT_EQ(std::memcmp(&back[i], &values[i], sizeof(double)), 0) << "value " << i << ": " << values[i];
     }
     EXPECT_EQ(g.scalar("time"), 4.1);
-    EXPECT_NE(slurp(d/"x.state").find("\n-0x1.8p+0\n"), std::string::npos);   // C99 %a form
+    EXPECT_TRUE(g.vector("none").empty());
+    // Raw doubles: the file is the values' bytes and a line per key, not text.
+    const std::string text = slurp(d/"x.state");
+    EXPECT_NE(text.find("\nvalues 14\n"), std::string::npos);
+    EXPECT_LT(text.size(), 8*(values.size() + 1) + 200);
+    fs::remove_all(d);
+}
+
+TEST(RestartState, ReadsTheHexadecimalStatesOfEarlierVersions)
+{
+    const fs::path d = freshDir("hexState");
+    std::ofstream((d/"old.state").string())
+        << "// SlideFoam restart state: key, count, values as hexadecimal floats\n"
+        << "time 1\n0x1.0666666666666p+2\nvalues 3\n-0x1.8p+0\n0x0p+0\n-0x0p+0\n";
+    const StateFile g = StateFile::read((d/"old.state").string());
+    EXPECT_EQ(g.scalar("time"), 4.1);
+    ASSERT_EQ(g.vector("values").size(), 3u);
+    EXPECT_EQ(g.vector("values")[0], -1.5);
+    EXPECT_FALSE(std::signbit(g.vector("values")[1]));
+    EXPECT_TRUE(std::signbit(g.vector("values")[2]));
+    fs::remove_all(d);
+}
+
+TEST(RestartState, ATruncatedStateNamesFileAndKey)
+{
+    // A state cut short (a full disk, a copy broken off) is refused, naming the
+    // key whose values are missing, rather than read as zeros.
+    const fs::path d = freshDir("cutState");
+    StateFile f;
+    f.add("time", {4.1});
+    f.add("position", std::vector<double>(1000, 0.5));
+    const std::string path = (d/"cut.state").string();
+    f.write(path);
+    fs::resize_file(path, fs::file_size(path) - 100);
+    try
+    {
+        StateFile::read(path);
+        ADD_FAILURE() << "a truncated state was read";
+    }
+    catch (const slide::scene::InputError& e)
+    {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(path), std::string::npos) << what;
+        EXPECT_NE(what.find("position"), std::string::npos) << what;
+        EXPECT_NE(what.find("truncated"), std::string::npos) << what;
+    }
     fs::remove_all(d);
 }
 

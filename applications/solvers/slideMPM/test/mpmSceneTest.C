@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
@@ -619,21 +620,45 @@ TEST(SlideMPM, UnrecordedStepsLeaveTheDynamicsAlone)
     }
     const mpm::HostPoints a(every.points), b(last.points);
     ASSERT_EQ(a.count, b.count);
-    double maxRate = 0.0;
-    for (int p = 0; p < a.count; ++p)
+    // Where the nodes' sums are added atomically (CUDA, and its code paths on
+    // the host), their order, and with it the round-off, changes from run to
+    // run: the two runs agree to round-off there, bit for bit elsewhere. Each
+    // field's largest difference is taken relative to its largest value.
+    struct Field { const char* name; std::function<double(const mpm::HostPoints&, int)> value; };
+    const std::vector<Field> fields = {
+        {"x", [](const mpm::HostPoints& h, int p) { return h.position(p, 0); }},
+        {"y", [](const mpm::HostPoints& h, int p) { return h.position(p, 1); }},
+        {"u", [](const mpm::HostPoints& h, int p) { return h.velocity(p, 0); }},
+        {"v", [](const mpm::HostPoints& h, int p) { return h.velocity(p, 1); }},
+        {"sigma_xx", [](const mpm::HostPoints& h, int p) { return h.stress(p, 0); }},
+        {"sigma_yy", [](const mpm::HostPoints& h, int p) { return h.stress(p, 1); }},
+        {"sigma_zz", [](const mpm::HostPoints& h, int p) { return h.stress(p, 2); }},
+        {"sigma_xy", [](const mpm::HostPoints& h, int p) { return h.stress(p, 3); }},
+        {"xi", [](const mpm::HostPoints& h, int p) { return h.xi(p); }},
+        {"s_u", [](const mpm::HostPoints& h, int p) { return h.strength(p); }},
+        {"shear strain rate", [](const mpm::HostPoints& h, int p) { return h.shearStrainRate(p); }},
+        {"plastic shear strain rate", [](const mpm::HostPoints& h, int p) { return h.plasticShearStrainRate(p); }},
+    };
+    for (const Field& f : fields)
     {
-        for (int c = 0; c < 2; ++c)
+        double largest = 0.0, difference = 0.0;
+        for (int p = 0; p < a.count; ++p)
         {
-            ASSERT_EQ(a.position(p, c), b.position(p, c)) << p;
-            ASSERT_EQ(a.velocity(p, c), b.velocity(p, c)) << p;
+            largest = std::max(largest, std::abs(f.value(a, p)));
+            difference = std::max(difference, std::abs(f.value(a, p) - f.value(b, p)));
         }
-        for (int c = 0; c < 4; ++c) ASSERT_EQ(a.stress(p, c), b.stress(p, c)) << p;
-        ASSERT_EQ(a.xi(p), b.xi(p)) << p;
-        ASSERT_EQ(a.strength(p), b.strength(p)) << p;
-        ASSERT_EQ(a.shearStrainRate(p), b.shearStrainRate(p)) << p;
-        ASSERT_EQ(a.plasticShearStrainRate(p), b.plasticShearStrainRate(p)) << p;
-        maxRate = std::max(maxRate, a.plasticShearStrainRate(p));
+        if (mpm::nodeScatterIsAtomic)
+        {
+            std::cout << f.name << ": largest difference " << difference << " of largest value " << largest << "\n";
+            EXPECT_LE(difference, 1e-9*largest) << f.name;
+        }
+        else
+        {
+            EXPECT_EQ(difference, 0.0) << f.name;
+        }
     }
+    double maxRate = 0.0;
+    for (int p = 0; p < a.count; ++p) maxRate = std::max(maxRate, a.plasticShearStrainRate(p));
     EXPECT_GT(maxRate, 0.0);   // the block slumps: the rates compared are not all zero
 }
 
@@ -1074,7 +1099,7 @@ TEST(SlideMPM, ThinLayerOnTheBaseStaysStill)
     }
 }
 
-// purgeState keeps slideMPM's restart states alone (188 MB a write on the
+// purgeState keeps slideMPM's restart states alone (89 MB a write on the
 // flume at H0/60): absent it follows controlDict's purgeWrite, which would
 // also purge slideFoam's time directories.
 TEST(SlideMPM, PurgeStateOverridesPurgeWriteForStatesOnly)
