@@ -17,6 +17,14 @@ def slidefoam_env():
 
 
 def which(app):
+    """The executable of `app` on SlideFoam's PATH, or the one SLIDEFOAM_<APP>_BINARY names (e.g.
+    SLIDEFOAM_SLIDEMPM_BINARY=platforms/<opts>/bin-cuda/slideMPM runs the validation scripts on a GPU)."""
+    key = "SLIDEFOAM_%s_BINARY" % app.upper()
+    if os.environ.get(key):
+        exe = os.path.abspath(os.environ[key])
+        if not os.access(exe, os.X_OK):
+            raise SystemExit("%s=%s: not an executable" % (key, os.environ[key]))
+        return exe
     for d in slidefoam_env()["PATH"].split(":"):
         p = os.path.join(d, app)
         if os.access(p, os.X_OK):

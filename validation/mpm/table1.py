@@ -43,6 +43,11 @@ OLD_DETECTOR = " (mechanism from the detector before session 25, which parted bo
 CAUCHY = " (Cauchy stress rate, before session 40)"
 
 
+def on_gpu(r):
+    """" on CUDA" where row r ran on a GPU (SLIDEFOAM_SLIDEMPM_BINARY): its wall time is not this machine's."""
+    return " on CUDA" if (r.get("backend") or "").startswith("Cuda") else ""
+
+
 def cauchy_rate(r):
     """Whether row r ran with the Cauchy stress's rate (rows without the key are older than the choice)."""
     return r.get("stressRate", "cauchy") == "cauchy"
@@ -80,6 +85,7 @@ def case_result(c, cells, ppc, d):
     r = read_runout(os.path.join(d, "postProcessing", "slideMPM", "runout.dat"))
     return {"case": c, "cells": cells, "ppc": ppc, "runout": s["runout_m"], "endTime": s["end_time_s"],
             "atRest": s["at_rest"], "wall": s["wall_time_s"], "particles": s["problem_size"],
+            "backend": s.get("backend"),
             "mechanism": s["mechanism"], "shearBand": s.get("shear_band"), "mech10": mechanism_at(s, 10.0),
             "mech30": mechanism_at(s, 30.0),
             "baseContact": s.get("base_contact", "withinCell"),
@@ -234,7 +240,8 @@ def main():
                 extra += OLD_DETECTOR
             if cauchy_rate(res):
                 extra += CAUCHY
-            row += " %.1f%s | %s | %s%s | %.0f s |" % (res["runout"], state, err, res["mechanism"], extra, res["wall"])
+            row += " %.1f%s | %s | %s%s | %.0f s%s |" % (res["runout"], state, err, res["mechanism"], extra, res["wall"],
+                                                       on_gpu(res))
         lines.append(row)
     # The stored runs at FINE's cell or finer (the paper's H0/60 among them) are shown too.
     fine = [(c, r) for c in cases if c in FINE for r in results
@@ -243,10 +250,10 @@ def main():
         lines += ["", "Cases whose reference set-up is finer than the table's (`--fine`):", ""]
         for c, r in fine:
             lines.append("- Case %d at H0/%d, %dx%d particles: %.1f m%s; mechanism %s; 10 s: %s, 30 s: %s; "
-                         "shear band %s; %.0f s%s" % (
+                         "shear band %s; %.0f s%s%s" % (
                              c, r["cells"], r["ppc"], r["ppc"], r["runout"],
                              "" if r["atRest"] else " (moving, t = %g s)" % r["endTime"], r["mechanism"],
-                             r["mech10"], r["mech30"], r["shearBand"], r["wall"],
+                             r["mech10"], r["mech30"], r["shearBand"], r["wall"], on_gpu(r),
                              (OLD_DETECTOR if r.get("breakawayFilm") is None else "")
                              + (CAUCHY if cauchy_rate(r) else "")))
     # Every stored cell of a case with these particles, coarse to fine: the convergence in the cell, and the
