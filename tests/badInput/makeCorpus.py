@@ -306,6 +306,8 @@ add("cfd-face-viscosity-not-bool", "face viscosities asked with a word that is n
     cfd0[:-1] + ["faceViscosity   faces;", ""], len(cfd0), "faceViscosity", "slideFoamCase")
 add("mpm-particles-per-cell-above", "64 x 64 particles per cell (beyond the 32 a convergence study in the particles "
     "needs)", "system/mpmDict", mpm0[:-1] + ["particlesPerCell 64;", ""], len(mpm0), "particlesPerCell", "slideMPM")
+add("mpm-phase-times-not-bool", "phase times asked with a word that is not yes or no", "system/mpmDict",
+    mpm0[:-1] + ["phaseTimes       fenced;", ""], len(mpm0), "phaseTimes", "slideMPM")
 
 
 def main():
