@@ -61,14 +61,18 @@ void StateFile::write(const std::string& path) const
         std::ofstream os(tmp, std::ios::binary);
         if (!os) throw std::runtime_error("cannot write " + tmp);
         os << binaryHeader << '\n';
-        std::vector<double> raw;
+        std::vector<double> swapped;   // only on a big-endian host: the file is little-endian
         for (const std::string& key : order_)
         {
-            const std::vector<double>& v = data_.at(key);
-            os << key << ' ' << v.size() << '\n';
-            raw = v;
-            if (!hostIsLittleEndian()) for (double& x : raw) swapBytes(x);
-            os.write(reinterpret_cast<const char*>(raw.data()), static_cast<std::streamsize>(raw.size()*sizeof(double)));
+            const std::vector<double>* v = &data_.at(key);
+            os << key << ' ' << v->size() << '\n';
+            if (!hostIsLittleEndian())
+            {
+                swapped = *v;
+                for (double& x : swapped) swapBytes(x);
+                v = &swapped;
+            }
+            os.write(reinterpret_cast<const char*>(v->data()), static_cast<std::streamsize>(v->size()*sizeof(double)));
             os << '\n';
         }
         if (!os) throw std::runtime_error("cannot write " + tmp);
