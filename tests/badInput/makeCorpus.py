@@ -308,6 +308,8 @@ add("mpm-particles-per-cell-above", "64 x 64 particles per cell (beyond the 32 a
     "needs)", "system/mpmDict", mpm0[:-1] + ["particlesPerCell 64;", ""], len(mpm0), "particlesPerCell", "slideMPM")
 add("mpm-phase-times-not-bool", "phase times asked with a word that is not yes or no", "system/mpmDict",
     mpm0[:-1] + ["phaseTimes       fenced;", ""], len(mpm0), "phaseTimes", "slideMPM")
+add("mpm-band-rate-without-band", "Eq. (1)'s rate asked of a shear band whose thickness is not given",
+    "system/mpmDict", mpm0[:-1] + ["shearBandRate    yes;", ""], len(mpm0), "shearBandRate", "slideMPM")
 
 
 def main():

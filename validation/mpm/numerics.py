@@ -48,6 +48,9 @@ from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 # runs alike at 2x2 and 4x4 particles (410.6 and 413.7 m at 40 s; 0.01 leaves 4x4 at 396.7 m, 0.1 parts 2x2 and 4x4
 # by 3 %: shifting.md).
 SHIFT = 0.03
+# mpmDict of the bandRate variant: Eq. (1)'s rate taken in a band of the paper's cell, H0/60, as the remoulding
+# tutorials take xi (README, "Rate counted per shear band"): does the runout then stop depending on the cell?
+BAND_RATE = {"shearBandThickness": "0.0833333", "shearBandRate": "yes"}
 RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/CASE1_RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
 VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("quadratic", "quadratic transfer", {"transfer": "quadratic"}, None),
@@ -57,6 +60,7 @@ VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
             ("cellCapped", "APIC, stress quadrature capped at each cell's area", {"stressQuadrature": "cellCapped"},
              None),
             ("shifted", "APIC, particle shifting %g" % SHIFT, {"particleShifting": SHIFT}, None),
+            ("bandRate", "APIC, Eq. (1)'s rate and xi per H0/60 band", BAND_RATE, None),
             ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", RATE_FREE_CLAY, CASE1_RATE_FREE_SCENE),
             ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)",
              {"transfer": "quadratic", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),

@@ -12,7 +12,7 @@ namespace mpm
 MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& overrideSetting)
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
-                      "poissonRatio", "volumetricLocking", "stressQuadrature", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "particleSplitting", "maxParticleLength", "particleShifting", "writeFields", "writeState",
+                      "poissonRatio", "volumetricLocking", "stressQuadrature", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "shearBandRate", "particleSplitting", "maxParticleLength", "particleShifting", "writeFields", "writeState",
                       "purgeState", "progressInterval", "phaseTimes"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
@@ -103,6 +103,11 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.shearBandThickness = d.getScalarInRange("shearBandThickness", 0.0, 1e6, true, true,
                                                   "shear band thickness of the remoulding [m]");
     }
+    c.shearBandRate = d.getBool("shearBandRate", false);
+    if (c.shearBandRate && !(c.shearBandThickness > 0.0))
+    {
+        d.fail("shearBandRate", "needs a shearBandThickness > 0 (the band whose rate Eq. (1) is to see)");
+    }
     c.particleSplitting = d.getBool("particleSplitting", true);
     if (d.found("maxParticleLength"))
     {
@@ -142,6 +147,7 @@ UndrainedClay MpmControls::clay(const rheology::HerschelBulkleyRemoulding& stren
     c.previousStepRate = previousStepRate;
     c.kirchhoffRate = kirchhoffStressRate;
     c.bandStrainFactor = rheology::shearBandStrainFactor(shearBandThickness, cellSize);
+    c.bandRateFactor = shearBandRate ? c.bandStrainFactor : 1.0;
     return c;
 }
 
@@ -169,7 +175,8 @@ std::string MpmControls::describe(const double cellSize) const
     if (shearBandThickness > 0.0)
     {
         os << ", xi counts shear bands " << shearBandThickness << " m thick (band strain = "
-           << rheology::shearBandStrainFactor(shearBandThickness, cellSize) << " x cell strain)";
+           << rheology::shearBandStrainFactor(shearBandThickness, cellSize) << " x cell strain"
+           << (shearBandRate ? ", and Eq. (1) their rate: the same factor x cell rate" : "") << ")";
     }
     if (particleSplitting) os << ", particles split when longer than " << maxParticleLength << " cell(s)";
     else os << ", no particle splitting";

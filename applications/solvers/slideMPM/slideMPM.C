@@ -320,6 +320,8 @@ int main(int argc, char** argv)
         summary.addNumber("courant", controls.courant);
         summary.addString("strain_rate", controls.strainRateWord());
         summary.addString("stress_rate", controls.stressRateWord());
+        summary.addNumber("shear_band_thickness_m", controls.shearBandThickness);
+        summary.addBool("shear_band_rate", controls.shearBandRate);
         summary.addString("initial_stress", controls.geostaticStart ? "geostatic" : "none");
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);

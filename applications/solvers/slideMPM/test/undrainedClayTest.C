@@ -141,6 +141,44 @@ TEST(UndrainedClay, ShearBandThinnerThanTheCellSoftensFaster)
     EXPECT_LT(UndrainedClay::shearStress(sigBand), 0.5*UndrainedClay::shearStress(sigCell));
 }
 
+TEST(UndrainedClay, ShearBandRateIsTheCellsTimesTheBandFactor)
+{
+    // A cell six times the band's thickness (H0/10 cells, H0/60 bands): the
+    // cell's slip crosses the band, so in steady shear at the cell's rate gdot
+    // the clay holds Eq. (1)'s strength at 6 gdot, with each way of taking
+    // the rate; the cell's plastic strain is unchanged by it (xi unscaled
+    // here: bandStrainFactor 1, so the rate alone is tested).
+    const rheology::HerschelBulkleyRemoulding m = material(0.45, 0.23, 1.0, 1.0);
+    const double factor = rheology::shearBandStrainFactor(5.0/60.0, 0.5);
+    ASSERT_NEAR(factor, 6.0, 1e-12);
+    for (int way = 0; way < 2; ++way)
+    {
+        UndrainedClay band = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49, way == 0);
+        band.bandRateFactor = factor;
+        const UndrainedClay cell = UndrainedClay::fromYoungs(m, 100.0*m.s_uo, 0.49, way == 0);
+        // Up to 36 1/s in the band (2.9 s_uo): a slide's shear layers reach
+        // about 10 1/s, and higher the Jaumann spin of the larger elastic
+        // strain turns more of the rate away from the yield surface.
+        for (double gdot : {0.006, 0.6, 6.0})
+        {
+            const double T = 2.0/gdot;   // 200 % shear strain: steady
+            double sb[4] = {0, 0, 0, 0}, sc[4] = {0, 0, 0, 0}, xb = 0.0, xc = 0.0;
+            shear(band, gdot, T, T/2000.0, xb, sb);
+            shear(cell, gdot, T, T/2000.0, xc, sc);
+            const char* name = way == 0 ? " plastic" : " total";
+            EXPECT_NEAR(UndrainedClay::shearStress(sb), m.strength(factor*gdot, 0.0),
+                        1e-3*m.strength(factor*gdot, 0.0)) << gdot << name;
+            EXPECT_NEAR(UndrainedClay::shearStress(sc), m.strength(gdot, 0.0), 1e-3*m.strength(gdot, 0.0))
+                << gdot << name;
+            // Both flow at the cell's rate: the same plastic strain less the
+            // larger elastic strain the band's higher strength holds (to what
+            // the Jaumann spin turns into normal stress differences).
+            EXPECT_NEAR(xb, xc - (UndrainedClay::shearStress(sb) - UndrainedClay::shearStress(sc))/band.shearModulus,
+                        2e-3*xc) << gdot << name;
+        }
+    }
+}
+
 TEST(UndrainedClay, RigidRotationLeavesTheStressInvariants)
 {
     // Jaumann rate: a spinning particle keeps its principal stresses.
