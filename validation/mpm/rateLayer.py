@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""Eq. (1)'s shear layer on a no-slip base in slideMPM, against its exact steady profile: how fast a layer of Table 1
+Case 1's clay (s_uo 150 Pa, eta 0.35, n 0.15, gdot_ref 0.06 1/s, rho' 600 kg/m3, 3.43 deg) flows when the cell is
+thicker than the layer's own shear layer, with Eq. (1)'s rate taken per cell and per band (mpmDict shearBandRate,
+band H0/60 of Table 1 = 0.0833 m).
+
+Why: at n = 0.15 the steady layer's rate falls by e over l = n (tau_b - s_uo)/(rho' g S) above the base (4.1 cm for a
+0.7 m layer, 2.6 cm for 0.6 m; validation/lib/layerProfile.py), and nearly all of its slip happens there. A cell
+thicker than l spreads that slip over the cell, so at a given slip its rate, and Eq. (1)'s strength, is lower: the
+layer runs faster than Eq. (1)'s. Taken per band the rate is the cell's times cell/band, as if the slip crossed a band
+of the given thickness: right where the band is l, and a fixed error elsewhere. What a runout sees of this is where the
+deposit stops (README, open problem 5); this is the same question on a layer with an exact answer.
+
+The layer (80 m x 0.7 m, released from its geostatic state) is written every 2 s; in its middle (the particles weighed
+by a tent 10 m wide) its thickness (mass over rho') and its plug speed (the mean velocity of the top half of its
+particles) are set beside the exact plug speed of a layer of that thickness. The exact layer relaxes in about 3.6 s
+(rho h U/((tau_b - s_uo) l)), the MPM's over tens of seconds where its base holds more; the windows average 24-32 and
+32-40 s. The plug's speed grows as the thickness to
+the power 20 here (m (tau_b/(tau_b - s_uo)), m = (n + 1)/n), so the table states both, and the speed of the exact layer
+as thick as the MPM's, not of the 0.7 m it started at. Writes rateLayer.md and rateLayer.json beside itself.
+
+Usage: validation/mpm/rateLayer.py [--cells 2,4,8] [--ppc 4] [--rates cell,band] [--transfers apic,quadratic]
+       [--work DIR] [--stored]   (after ./Allwmake;
+cells per layer height: 2, 4, 8 are Table 1's H0/14, H0/29, H0/57)"""
+import argparse
+import json
+import math
+import os
+import sys
+import tempfile
+
+here = os.path.dirname(os.path.abspath(__file__))
+top = os.path.abspath(os.path.join(here, "..", ".."))
+sys.path.insert(0, os.path.join(top, "validation", "lib"))
+from cfdcase import make_case  # noqa: E402
+from layerProfile import CASE1, G, RHO, S, THETA, exact  # noqa: E402
+from runner import run_method  # noqa: E402
+from slidefoam_io import particles_on_planar_base  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+H = 0.7
+LENGTH = 80.0
+BAND = 5.0/60.0                    # Table 1's H0/60, as the remoulding tutorials' shearBandThickness
+WINDOWS = ((24.0, 32.0), (32.0, 40.0))
+END = WINDOWS[-1][1]
+HALF_WINDOW = 5.0                 # the tent over the middle that weighs the particles [m]
+
+
+def middle(case, t):
+    """Thickness, plug speed and basal plastic rate of the layer's middle at the frame nearest t. The particles are
+    weighed by a tent over the middle 10 m, so that one crossing its edge changes nothing at once (counted in or out
+    of a window the thickness jumps by a particle's share, and the exact plug speed by 20 times that)."""
+    s, n, u, arr = particles_on_planar_base(case, t, THETA)
+    mid = 0.5*(s.min() + s.max())
+    w = np.maximum(1.0 - np.abs(s - mid)/HALF_WINDOW, 0.0)
+    near = w > 0.0
+    z = n - n[near].min()
+    thickness = float((w*arr["mass"]).sum()/(RHO*HALF_WINDOW))
+    top = near & (z > 0.5*thickness)
+    bottom = near & (z < 0.25*thickness)
+    return (thickness, float((w*u)[top].sum()/w[top].sum()),
+            float(np.average(arr["plasticShearStrainRate"][bottom], weights=w[bottom])))
+
+
+def run(work, cells, ppc, rate, transfer="apic"):
+    name = "rateLayer_h%d_p%d_%s_%s" % (cells, ppc, rate, transfer)
+    mpm = ("setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\ntransfer %s;\nwriteState no;\nprogressInterval 30;\n"
+           % (cells, ppc, transfer))
+    if rate == "band":
+        mpm += "shearBandThickness %.7g;\nshearBandRate yes;\n" % BAND
+    case = make_case(os.path.join(top, "tutorials", "table1", "case01"), work, name,
+                     scene={"length": LENGTH, "height": H},
+                     control={"endTime": END, "writeInterval": 2, "stopAtRest": "no"},
+                     dicts={"system/mpmDict": mpm})
+    summary, _ = run_method("slideMPM", case)
+    r = {"cells": cells, "ppc": ppc, "rate": rate, "transfer": transfer, "cell_m": H/cells, "wall": summary["wall_time_s"],
+         "particles": summary["problem_size"], "history": [], "windows": []}
+    for t in range(2, int(END) + 1, 2):
+        h, plug, basal = middle(case, float(t))
+        r["history"].append({"t": t, "thickness": h, "plug": plug, "basalPlasticRate": basal})
+    for t0, t1 in WINDOWS:
+        rows = [x for x in r["history"] if t0 <= x["t"] <= t1]
+        h = float(np.mean([x["thickness"] for x in rows]))
+        plug = float(np.mean([x["plug"] for x in rows]))
+        ex = exact(h)
+        r["windows"].append({"t0": t0, "t1": t1, "thickness": h, "plug": plug, "exactPlug": ex["plug"],
+                             "decayLength": ex["decay_length"], "basalRate": ex["basal_rate"]})
+    return r
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--cells", default="2,4,8")
+    ap.add_argument("--ppc", type=int, default=4)
+    ap.add_argument("--rates", default="cell,band")
+    ap.add_argument("--transfers", default="apic", help="apic, quadratic or both (comma-separated)")
+    ap.add_argument("--work", default=None)
+    ap.add_argument("--stored", action="store_true", help="rewrite rateLayer.md from rateLayer.json without running")
+    args = ap.parse_args()
+    path = os.path.join(here, "rateLayer.json")
+    stored = json.load(open(path)) if os.path.isfile(path) else []
+    if args.stored:
+        write_table(stored)
+        return
+    work = args.work or tempfile.mkdtemp(prefix="rateLayer_")
+    results = []
+    for cells in (int(c) for c in args.cells.split(",")):
+        for rate, transfer in ((r, t) for r in args.rates.split(",") for t in args.transfers.split(",")):
+            r = run(work, cells, args.ppc, rate, transfer)
+            results.append(r)
+            w = r["windows"][-1]
+            print("cell H/%d, rate per %s, %s: %.4f m thick, plug %.4f m/s against %.4f m/s exact (%.2f x); %.0f s"
+                  % (cells, rate, transfer, w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"],
+                     r["wall"]), flush=True)
+    # Runs of other set-ups stay (a run replaces the stored one of its cell, particles, rate and transfer).
+    key = lambda r: (r["cells"], r["ppc"], r["rate"], r.get("transfer", "apic"))
+    new = {key(r) for r in results}
+    results = sorted([r for r in stored if key(r) not in new] + results,
+                     key=lambda r: (r.get("transfer", "apic"), r["ppc"], r["cells"], r["rate"]))
+    with open(path, "w") as f:
+        json.dump(results, f, indent=1)
+    write_table(results)
+
+
+def excess_strength(w):
+    """The basal stress [Pa] by which the exact layer as thick as the MPM's would have to be held back to flow at the
+    MPM's plug speed: its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n."""
+    tau_b = RHO*G*S*w["thickness"]
+    m = (CASE1["n"] + 1.0)/CASE1["n"]
+    return (tau_b - CASE1["s_uo"])*(1.0 - (w["plug"]/w["exactPlug"])**(1.0/m)), tau_b
+
+
+def write_table(results):
+    e0 = exact(H)
+    lines = ["# Eq. (1)'s shear layer on a no-slip base in slideMPM (written by rateLayer.py)", "",
+             "%g m x %g m layer of Table 1 Case 1's clay (s_uo %g Pa, eta %g, n %g, gdot_ref %g 1/s), rho' %g kg/m3, "
+             "%.2f deg, released from its geostatic state; Eq. (1)'s rate per cell, or per "
+             "band of %.4f m (Table 1's H0/60; `shearBandRate yes`). Exact steady layer %g m thick: plug %.4f m/s, "
+             "basal rate %.2f 1/s, decay length l = %.4f m. The middle of the layer (a tent 10 m wide): its "
+             "thickness (mass / rho'), its plug speed (the top half's mean velocity, tent-weighted), and the exact "
+             "plug speed of a layer that thick; the excess basal strength is the stress by which that exact layer would "
+             "have to be held back to flow at the MPM's plug speed (its plug speed goes as (tau_b - s_uo)^m, "
+             "m = (n + 1)/n = 7.67): what the MPM's base holds beyond Eq. (1). The script's docstring says why."
+             % (LENGTH, H, CASE1["s_uo"], CASE1["eta"], CASE1["n"], CASE1["gdotRef"], RHO, THETA, BAND, H,
+                e0["plug"], e0["basal_rate"], e0["decay_length"]), "",
+             "| cell [m] | Eq. (1)'s rate | transfer | particles per cell | window [s] | thickness [m] | plug [m/s] | "
+             "exact plug, same thickness [m/s] | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
+             "particles | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        for w in r["windows"]:
+            excess, tau_b = excess_strength(w)
+            lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %.4f | %.4f | %.2f | %.1f (%.1f %%) | %.4f | "
+                         "%d | %.0f |"
+                         % (r["cell_m"], r["cells"], r["rate"], r.get("transfer", "apic"), r["ppc"], r["ppc"], w["t0"],
+                            w["t1"], w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"], excess,
+                            100.0*excess/tau_b, w["decayLength"], r["particles"], r["wall"]))
+    lines += ["", "Histories of the middle (time [s]: thickness [m], plug speed [m/s], mean plastic rate of the bottom "
+              "quarter [1/s]):", ""]
+    for r in results:
+        lines.append("- H/%d, %dx%d, per %s, %s: " % (r["cells"], r["ppc"], r["ppc"], r["rate"], r.get("transfer", "apic"))
+                     + "; ".join("%d: %.4f, %.4f, %.3f" % (x["t"], x["thickness"], x["plug"], x["basalPlasticRate"])
+                                 for x in r["history"]))
+    with open(os.path.join(here, "rateLayer.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote %s" % os.path.join(here, "rateLayer.md"))
+
+
+if __name__ == "__main__":
+    main()
