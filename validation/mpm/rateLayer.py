@@ -17,9 +17,11 @@ particles) are set beside the exact plug speed of a layer of that thickness. The
 (rho h U/((tau_b - s_uo) l)), the MPM's over tens of seconds where its base holds more; the windows average 24-32 and
 32-40 s. The plug's speed grows as the thickness to
 the power 20 here (m (tau_b/(tau_b - s_uo)), m = (n + 1)/n), so the table states both, and the speed of the exact layer
-as thick as the MPM's, not of the 0.7 m it started at. Writes rateLayer.md and rateLayer.json beside itself.
+as thick as the MPM's, not of the 0.7 m it started at. --case 2 runs a 2.4 m layer of Case 2's clay (s_uo 500 Pa,
+eta 0.45, n 0.23: plug 0.071 m/s, l = 0.23 m), whose weak slide shortens with the cell too. Writes rateLayer.md and
+rateLayer.json beside itself.
 
-Usage: validation/mpm/rateLayer.py [--cells 2,4,8] [--ppc 4] [--rates cell,band] [--transfers apic,quadratic]
+Usage: validation/mpm/rateLayer.py [--case 1] [--cells 2,4,8] [--ppc 4] [--rates cell,band] [--transfers apic,quadratic]
        [--work DIR] [--stored]   (after ./Allwmake;
 cells per layer height: 2, 4, 8 are Table 1's H0/14, H0/29, H0/57)"""
 import argparse
@@ -39,7 +41,10 @@ from slidefoam_io import particles_on_planar_base  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-H = 0.7
+# The layer of each Table 1 case's clay (its tutorial's sceneProperties; both on 3.43 deg): thick enough to flow at
+# 0.07-0.12 m/s in steady state, a little thicker than their deposits (Case 1 0.6 m, Case 2 2.0 m in slideDAM).
+LAYERS = {1: {"material": CASE1, "height": 0.7},
+          2: {"material": {"s_uo": 500.0, "eta": 0.45, "n": 0.23, "gdotRef": 0.06}, "height": 2.4}}
 LENGTH = 80.0
 BAND = 5.0/60.0                    # Table 1's H0/60, as the remoulding tutorials' shearBandThickness
 WINDOWS = ((24.0, 32.0), (32.0, 40.0))
@@ -63,27 +68,29 @@ def middle(case, t):
             float(np.average(arr["plasticShearStrainRate"][bottom], weights=w[bottom])))
 
 
-def run(work, cells, ppc, rate, transfer="apic"):
-    name = "rateLayer_h%d_p%d_%s_%s" % (cells, ppc, rate, transfer)
+def run(work, case, cells, ppc, rate, transfer="apic"):
+    name = "rateLayer_case%d_h%d_p%d_%s_%s" % (case, cells, ppc, rate, transfer)
+    H, material = LAYERS[case]["height"], LAYERS[case]["material"]
     mpm = ("setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\ntransfer %s;\nwriteState no;\nprogressInterval 30;\n"
            % (cells, ppc, transfer))
     if rate == "band":
         mpm += "shearBandThickness %.7g;\nshearBandRate yes;\n" % BAND
-    case = make_case(os.path.join(top, "tutorials", "table1", "case01"), work, name,
+    d = make_case(os.path.join(top, "tutorials", "table1", "case%02d" % case), work, name,
                      scene={"length": LENGTH, "height": H},
                      control={"endTime": END, "writeInterval": 2, "stopAtRest": "no"},
                      dicts={"system/mpmDict": mpm})
-    summary, _ = run_method("slideMPM", case)
-    r = {"cells": cells, "ppc": ppc, "rate": rate, "transfer": transfer, "cell_m": H/cells, "wall": summary["wall_time_s"],
+    summary, _ = run_method("slideMPM", d)
+    r = {"case": case, "cells": cells, "ppc": ppc, "rate": rate, "transfer": transfer, "cell_m": H/cells,
+         "wall": summary["wall_time_s"],
          "particles": summary["problem_size"], "history": [], "windows": []}
     for t in range(2, int(END) + 1, 2):
-        h, plug, basal = middle(case, float(t))
+        h, plug, basal = middle(d, float(t))
         r["history"].append({"t": t, "thickness": h, "plug": plug, "basalPlasticRate": basal})
     for t0, t1 in WINDOWS:
         rows = [x for x in r["history"] if t0 <= x["t"] <= t1]
         h = float(np.mean([x["thickness"] for x in rows]))
         plug = float(np.mean([x["plug"] for x in rows]))
-        ex = exact(h)
+        ex = exact(h, material=material)
         r["windows"].append({"t0": t0, "t1": t1, "thickness": h, "plug": plug, "exactPlug": ex["plug"],
                              "decayLength": ex["decay_length"], "basalRate": ex["basal_rate"]})
     return r
@@ -91,6 +98,7 @@ def run(work, cells, ppc, rate, transfer="apic"):
 
 def main():
     ap = argparse.ArgumentParser()
+    ap.add_argument("--case", type=int, default=1, choices=sorted(LAYERS), help="whose clay (Table 1 case)")
     ap.add_argument("--cells", default="2,4,8")
     ap.add_argument("--ppc", type=int, default=4)
     ap.add_argument("--rates", default="cell,band")
@@ -107,61 +115,68 @@ def main():
     results = []
     for cells in (int(c) for c in args.cells.split(",")):
         for rate, transfer in ((r, t) for r in args.rates.split(",") for t in args.transfers.split(",")):
-            r = run(work, cells, args.ppc, rate, transfer)
+            r = run(work, args.case, cells, args.ppc, rate, transfer)
             results.append(r)
             w = r["windows"][-1]
-            print("cell H/%d, rate per %s, %s: %.4f m thick, plug %.4f m/s against %.4f m/s exact (%.2f x); %.0f s"
-                  % (cells, rate, transfer, w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"],
+            print("Case %d's clay, cell H/%d, rate per %s, %s: %.4f m thick, plug %.4f m/s against %.4f m/s exact "
+                  "(%.2f x); %.0f s"
+                  % (args.case, cells, rate, transfer, w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"],
                      r["wall"]), flush=True)
     # Runs of other set-ups stay (a run replaces the stored one of its cell, particles, rate and transfer).
-    key = lambda r: (r["cells"], r["ppc"], r["rate"], r.get("transfer", "apic"))
+    key = lambda r: (r.get("case", 1), r["cells"], r["ppc"], r["rate"], r.get("transfer", "apic"))
     new = {key(r) for r in results}
     results = sorted([r for r in stored if key(r) not in new] + results,
-                     key=lambda r: (r.get("transfer", "apic"), r["ppc"], r["cells"], r["rate"]))
+                     key=lambda r: (r.get("case", 1), r.get("transfer", "apic"), r["ppc"], r["cells"], r["rate"]))
     with open(path, "w") as f:
         json.dump(results, f, indent=1)
     write_table(results)
 
 
-def excess_strength(w):
+def excess_strength(w, material):
     """The basal stress [Pa] by which the exact layer as thick as the MPM's would have to be held back to flow at the
     MPM's plug speed: its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n."""
     tau_b = RHO*G*S*w["thickness"]
-    m = (CASE1["n"] + 1.0)/CASE1["n"]
-    return (tau_b - CASE1["s_uo"])*(1.0 - (w["plug"]/w["exactPlug"])**(1.0/m)), tau_b
+    m = (material["n"] + 1.0)/material["n"]
+    return (tau_b - material["s_uo"])*(1.0 - (w["plug"]/w["exactPlug"])**(1.0/m)), tau_b
 
 
 def write_table(results):
-    e0 = exact(H)
-    lines = ["# Eq. (1)'s shear layer on a no-slip base in slideMPM (written by rateLayer.py)", "",
-             "%g m x %g m layer of Table 1 Case 1's clay (s_uo %g Pa, eta %g, n %g, gdot_ref %g 1/s), rho' %g kg/m3, "
-             "%.2f deg, released from its geostatic state; Eq. (1)'s rate per cell, or per "
-             "band of %.4f m (Table 1's H0/60; `shearBandRate yes`). Exact steady layer %g m thick: plug %.4f m/s, "
-             "basal rate %.2f 1/s, decay length l = %.4f m. The middle of the layer (a tent 10 m wide): its "
-             "thickness (mass / rho'), its plug speed (the top half's mean velocity, tent-weighted), and the exact "
-             "plug speed of a layer that thick; the excess basal strength is the stress by which that exact layer would "
-             "have to be held back to flow at the MPM's plug speed (its plug speed goes as (tau_b - s_uo)^m, "
-             "m = (n + 1)/n = 7.67): what the MPM's base holds beyond Eq. (1). The script's docstring says why."
-             % (LENGTH, H, CASE1["s_uo"], CASE1["eta"], CASE1["n"], CASE1["gdotRef"], RHO, THETA, BAND, H,
-                e0["plug"], e0["basal_rate"], e0["decay_length"]), "",
-             "| cell [m] | Eq. (1)'s rate | transfer | particles per cell | window [s] | thickness [m] | plug [m/s] | "
-             "exact plug, same thickness [m/s] | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
-             "particles | wall [s] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for r in results:
-        for w in r["windows"]:
-            excess, tau_b = excess_strength(w)
-            lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %.4f | %.4f | %.2f | %.1f (%.1f %%) | %.4f | "
-                         "%d | %.0f |"
-                         % (r["cell_m"], r["cells"], r["rate"], r.get("transfer", "apic"), r["ppc"], r["ppc"], w["t0"],
-                            w["t1"], w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"], excess,
-                            100.0*excess/tau_b, w["decayLength"], r["particles"], r["wall"]))
-    lines += ["", "Histories of the middle (time [s]: thickness [m], plug speed [m/s], mean plastic rate of the bottom "
-              "quarter [1/s]):", ""]
-    for r in results:
-        lines.append("- H/%d, %dx%d, per %s, %s: " % (r["cells"], r["ppc"], r["ppc"], r["rate"], r.get("transfer", "apic"))
-                     + "; ".join("%d: %.4f, %.4f, %.3f" % (x["t"], x["thickness"], x["plug"], x["basalPlasticRate"])
-                                 for x in r["history"]))
+    lines = ["# Eq. (1)'s shear layer on a no-slip base in slideMPM (written by rateLayer.py)"]
+    for case in sorted({r.get("case", 1) for r in results}):
+        rows = [r for r in results if r.get("case", 1) == case]
+        H, material = LAYERS[case]["height"], LAYERS[case]["material"]
+        e0 = exact(H, material=material)
+        lines += ["", "## Table 1 Case %d's clay" % case, "",
+                  "%g m x %g m layer of Table 1 Case %d's clay (s_uo %g Pa, eta %g, n %g, gdot_ref %g 1/s), rho' %g "
+                  "kg/m3, %.2f deg, released from its geostatic state; Eq. (1)'s rate per cell, or per band of %.4f m "
+                  "(Table 1's H0/60; `shearBandRate yes`). Exact steady layer %g m thick: plug %.4f m/s, basal rate "
+                  "%.2f 1/s, decay length l = %.4f m. The middle of the layer (a tent 10 m wide): its thickness (mass / "
+                  "rho'), its plug speed (the top half's mean velocity, tent-weighted), and the exact plug speed of a "
+                  "layer that thick; the excess basal strength is the stress by which that exact layer would have to be "
+                  "held back to flow at the MPM's plug speed (its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n = "
+                  "%.2f): what the MPM's base holds beyond Eq. (1). The script's docstring says why."
+                  % (LENGTH, H, case, material["s_uo"], material["eta"], material["n"], material["gdotRef"], RHO,
+                     THETA, BAND, H, e0["plug"], e0["basal_rate"], e0["decay_length"],
+                     (material["n"] + 1.0)/material["n"]), "",
+                  "| cell [m] | Eq. (1)'s rate | transfer | particles per cell | window [s] | thickness [m] | plug [m/s] | "
+                  "exact plug, same thickness [m/s] | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
+                  "particles | wall [s] |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for r in rows:
+            for w in r["windows"]:
+                excess, tau_b = excess_strength(w, material)
+                lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %.4f | %.4f | %.2f | %.1f (%.1f %%) | "
+                             "%.4f | %d | %.0f |"
+                             % (r["cell_m"], r["cells"], r["rate"], r.get("transfer", "apic"), r["ppc"], r["ppc"],
+                                w["t0"], w["t1"], w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"],
+                                excess, 100.0*excess/tau_b, w["decayLength"], r["particles"], r["wall"]))
+        lines += ["", "Histories of the middle (time [s]: thickness [m], plug speed [m/s], mean plastic rate of the "
+                  "bottom quarter [1/s]):", ""]
+        for r in rows:
+            lines.append("- H/%d, %dx%d, per %s, %s: " % (r["cells"], r["ppc"], r["ppc"], r["rate"],
+                                                        r.get("transfer", "apic"))
+                         + "; ".join("%d: %.4f, %.4f, %.3f" % (x["t"], x["thickness"], x["plug"], x["basalPlasticRate"])
+                                     for x in r["history"]))
     with open(os.path.join(here, "rateLayer.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("wrote %s" % os.path.join(here, "rateLayer.md"))
