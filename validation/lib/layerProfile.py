@@ -15,14 +15,16 @@ S = math.sin(math.radians(THETA))
 CASE1 = {"s_uo": S_UO, "eta": ETA, "n": N_HB, "gdotRef": GDOT_REF}
 
 
-def exact(h, rho_ambient=0.0, material=None):
+def exact(h, rho_ambient=0.0, material=None, surface_slope=0.0):
     """Yield height, plug speed, basal rate and decay length of the steady layer of depth h, and its profile, for
     Eq. (1) without remoulding (`material`: s_uo, eta, n, gdotRef; Case 1's by default; n = 1 is Bingham's). The
     layer's along-slope weight is its excess over the ambient's (which the ambient's hydrostatic pressure carries,
-    and which slideFoam's alongSlopeGravity leaves out): rho' - rho_ambient."""
+    and which slideFoam's alongSlopeGravity leaves out): rho' - rho_ambient. surface_slope dh/ds: a layer whose
+    thickness changes slowly along the base, taken as locally uniform, is driven by its hydrostatic pressure's
+    gradient as well, the weight along the base becoming rho g (S - cos(theta) dh/ds)."""
     mat = dict(CASE1, **(material or {}))
     s_uo, eta, n, gdot_ref = mat["s_uo"], mat["eta"], mat["n"], mat["gdotRef"]
-    w = (RHO - rho_ambient)*G*S
+    w = (RHO - rho_ambient)*G*(S - math.cos(math.radians(THETA))*surface_slope)
     xb = w*h/s_uo - 1.0
     if xb <= 0.0:
         raise ValueError("a layer %g m deep is held by s_uo (depth at yield %g m)" % (h, s_uo/w))

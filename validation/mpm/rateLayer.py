@@ -11,23 +11,25 @@ layer runs faster than Eq. (1)'s. Taken per band the rate is the cell's times ce
 of the given thickness: right where the band is l, and a fixed error elsewhere. What a runout sees of this is where the
 deposit stops (README, open problem 5); this is the same question on a layer with an exact answer.
 
-The layer (80 m x 0.7 m, released from its geostatic state) is written every 2 s; in its middle (the particles weighed
-by a tent 10 m wide) its thickness (mass over rho') and its plug speed (the mean velocity of the top half of its
-particles) are set beside the exact plug speed of a layer of that thickness. The exact layer relaxes in about 3.6 s
-(rho h U/((tau_b - s_uo) l)), the MPM's over tens of seconds where its base holds more; the windows average 24-32 and
-32-40 s. The plug's speed grows as the thickness to
-the power 20 here (m (tau_b/(tau_b - s_uo)), m = (n + 1)/n), so the table states both, and the speed of the exact layer
-as thick as the MPM's, not of the 0.7 m it started at. --case 2 runs a 2.4 m layer of Case 2's clay (s_uo 500 Pa,
-eta 0.45, n 0.23: plug 0.071 m/s, l = 0.23 m), whose weak slide shortens with the cell too. Writes rateLayer.md and
-rateLayer.json beside itself.
+The layer (80 m x 0.7 m, released from its geostatic state) is written every 2 s. In its middle (the particles
+weighed by a tent 10 m wide) its thickness (mass over rho'), the slope of that thickness along the base and its plug
+speed (the mean velocity of the top half of its particles) are set beside the exact plug speed of a layer of that
+thickness, driven by its weight and by its hydrostatic pressure's gradient: a finite layer is not uniform (its rear
+stays put, so it stretches downslope), and the plug's speed grows as the thickness, or the driving stress, to the
+power 20 here (m tau_b/(tau_b - s_uo), m = (n + 1)/n). The exact layer relaxes in about 3.6 s
+(rho h U/((tau_b - s_uo) l)); the windows average 24-32 and 32-40 s. --case 2 runs a 2.4 m layer of Case 2's clay
+(s_uo 500 Pa, eta 0.45, n 0.23: plug 0.071 m/s, l = 0.23 m), whose weak slide shortens with the cell too. Writes
+rateLayer.md and rateLayer.json beside itself; --import analyses finished run directories instead of running.
 
 Usage: validation/mpm/rateLayer.py [--case 1] [--cells 2,4,8] [--ppc 4] [--rates cell,band] [--transfers apic,quadratic]
-       [--work DIR] [--stored]   (after ./Allwmake;
-cells per layer height: 2, 4, 8 are Table 1's H0/14, H0/29, H0/57)"""
+       [--work DIR] [--stored] [--import DIR ...]   (after ./Allwmake; cells per layer height: 2, 4, 8 are Table 1's
+       H0/14, H0/29, H0/57 for Case 1's layer and H0/4, H0/8, H0/17 for Case 2's; on 2 cores Case 1 H/8 takes about
+       10 minutes a run, Case 2 H/16 11 minutes, the others seconds to 1.5 minutes)"""
 import argparse
 import json
 import math
 import os
+import re
 import sys
 import tempfile
 
@@ -37,7 +39,7 @@ sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case  # noqa: E402
 from layerProfile import CASE1, G, RHO, S, THETA, exact  # noqa: E402
 from runner import run_method  # noqa: E402
-from slidefoam_io import particles_on_planar_base  # noqa: E402
+from slidefoam_io import particles_on_planar_base, read_summary  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -53,47 +55,69 @@ HALF_WINDOW = 5.0                 # the tent over the middle that weighs the par
 
 
 def middle(case, t):
-    """Thickness, plug speed and basal plastic rate of the layer's middle at the frame nearest t. The particles are
-    weighed by a tent over the middle 10 m, so that one crossing its edge changes nothing at once (counted in or out
-    of a window the thickness jumps by a particle's share, and the exact plug speed by 20 times that)."""
+    """Thickness, its slope along the base, plug speed and basal plastic rate of the layer's middle at the frame
+    nearest t. The particles are weighed by a tent over the middle 10 m, so that one crossing its edge changes
+    nothing at once (counted in or out of a window the thickness jumps by a particle's share, and the exact plug
+    speed by 20 times that). The slope is the first moment of the mass under a tent 20 m wide: for h = h0 + g x,
+    sum m x T(x) = rho g int x^2 T dx = rho g L^3/6 (T(x) = 1 - |x|/L), a weight that vanishes at its ends too."""
     s, n, u, arr = particles_on_planar_base(case, t, THETA)
     mid = 0.5*(s.min() + s.max())
     w = np.maximum(1.0 - np.abs(s - mid)/HALF_WINDOW, 0.0)
     near = w > 0.0
     z = n - n[near].min()
     thickness = float((w*arr["mass"]).sum()/(RHO*HALF_WINDOW))
+    x = s - mid
+    L = 2.0*HALF_WINDOW
+    slope = float((arr["mass"]*x*np.maximum(1.0 - np.abs(x)/L, 0.0)).sum()/(RHO*L**3/6.0))
     top = near & (z > 0.5*thickness)
     bottom = near & (z < 0.25*thickness)
-    return (thickness, float((w*u)[top].sum()/w[top].sum()),
+    return (thickness, slope, float((w*u)[top].sum()/w[top].sum()),
             float(np.average(arr["plasticShearStrainRate"][bottom], weights=w[bottom])))
 
 
 def run(work, case, cells, ppc, rate, transfer="apic"):
     name = "rateLayer_case%d_h%d_p%d_%s_%s" % (case, cells, ppc, rate, transfer)
-    H, material = LAYERS[case]["height"], LAYERS[case]["material"]
     mpm = ("setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\ntransfer %s;\nwriteState no;\nprogressInterval 30;\n"
            % (cells, ppc, transfer))
     if rate == "band":
         mpm += "shearBandThickness %.7g;\nshearBandRate yes;\n" % BAND
     d = make_case(os.path.join(top, "tutorials", "table1", "case%02d" % case), work, name,
-                     scene={"length": LENGTH, "height": H},
-                     control={"endTime": END, "writeInterval": 2, "stopAtRest": "no"},
-                     dicts={"system/mpmDict": mpm})
-    summary, _ = run_method("slideMPM", d)
+                  scene={"length": LENGTH, "height": LAYERS[case]["height"]},
+                  control={"endTime": END, "writeInterval": 2, "stopAtRest": "no"},
+                  dicts={"system/mpmDict": mpm})
+    run_method("slideMPM", d)
+    return analyse(d, case, cells, ppc, rate, transfer)
+
+
+def analyse(d, case, cells, ppc, rate, transfer):
+    """The row of rateLayer.json from a finished run in directory d."""
+    summary = read_summary(os.path.join(d, "postProcessing", "slideMPM", "summary.json"))
+    H, material = LAYERS[case]["height"], LAYERS[case]["material"]
     r = {"case": case, "cells": cells, "ppc": ppc, "rate": rate, "transfer": transfer, "cell_m": H/cells,
-         "wall": summary["wall_time_s"],
-         "particles": summary["problem_size"], "history": [], "windows": []}
+         "wall": summary["wall_time_s"], "particles": summary["problem_size"], "history": [], "windows": []}
     for t in range(2, int(END) + 1, 2):
-        h, plug, basal = middle(d, float(t))
-        r["history"].append({"t": t, "thickness": h, "plug": plug, "basalPlasticRate": basal})
+        h, slope, plug, basal = middle(d, float(t))
+        r["history"].append({"t": t, "thickness": h, "surfaceSlope": slope, "plug": plug, "basalPlasticRate": basal})
     for t0, t1 in WINDOWS:
         rows = [x for x in r["history"] if t0 <= x["t"] <= t1]
         h = float(np.mean([x["thickness"] for x in rows]))
+        slope = float(np.mean([x["surfaceSlope"] for x in rows]))
         plug = float(np.mean([x["plug"] for x in rows]))
-        ex = exact(h, material=material)
-        r["windows"].append({"t0": t0, "t1": t1, "thickness": h, "plug": plug, "exactPlug": ex["plug"],
+        ex = exact(h, material=material, surface_slope=slope)
+        r["windows"].append({"t0": t0, "t1": t1, "thickness": h, "surfaceSlope": slope, "plug": plug,
+                             "exactPlug": ex["plug"], "exactPlugUniform": exact(h, material=material)["plug"],
                              "decayLength": ex["decay_length"], "basalRate": ex["basal_rate"]})
     return r
+
+
+def imported(d):
+    """analyse() of a run directory named as run() names them (rateLayer_case<C>_h<cells>_p<ppc>_<rate>_<transfer>;
+    before --case, rateLayer_h<cells>_p<ppc>_<rate>_<transfer> for Case 1)."""
+    m = re.search(r"rateLayer_(?:case(\d+)_)?h(\d+)_p(\d+)_(cell|band)_(apic|quadratic)$", d.rstrip("/"))
+    if not m:
+        raise SystemExit("rateLayer.py: --import %s: not a run directory rateLayer_case<C>_h<cells>_p<ppc>_<rate>_"
+                         "<transfer>" % d)
+    return analyse(d, int(m.group(1) or 1), int(m.group(2)), int(m.group(3)), m.group(4), m.group(5))
 
 
 def main():
@@ -105,6 +129,8 @@ def main():
     ap.add_argument("--transfers", default="apic", help="apic, quadratic or both (comma-separated)")
     ap.add_argument("--work", default=None)
     ap.add_argument("--stored", action="store_true", help="rewrite rateLayer.md from rateLayer.json without running")
+    ap.add_argument("--import", dest="imports", nargs="*", default=[],
+                    help="finished run directories to analyse and store instead of running")
     args = ap.parse_args()
     path = os.path.join(here, "rateLayer.json")
     stored = json.load(open(path)) if os.path.isfile(path) else []
@@ -112,8 +138,8 @@ def main():
         write_table(stored)
         return
     work = args.work or tempfile.mkdtemp(prefix="rateLayer_")
-    results = []
-    for cells in (int(c) for c in args.cells.split(",")):
+    results = [imported(d) for d in args.imports]
+    for cells in [] if args.imports else [int(c) for c in args.cells.split(",")]:
         for rate, transfer in ((r, t) for r in args.rates.split(",") for t in args.transfers.split(",")):
             r = run(work, args.case, cells, args.ppc, rate, transfer)
             results.append(r)
@@ -135,7 +161,7 @@ def main():
 def excess_strength(w, material):
     """The basal stress [Pa] by which the exact layer as thick as the MPM's would have to be held back to flow at the
     MPM's plug speed: its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n."""
-    tau_b = RHO*G*S*w["thickness"]
+    tau_b = RHO*G*(S - math.cos(math.radians(THETA))*w.get("surfaceSlope", 0.0))*w["thickness"]
     m = (material["n"] + 1.0)/material["n"]
     return (tau_b - material["s_uo"])*(1.0 - (w["plug"]/w["exactPlug"])**(1.0/m)), tau_b
 
@@ -151,31 +177,37 @@ def write_table(results):
                   "kg/m3, %.2f deg, released from its geostatic state; Eq. (1)'s rate per cell, or per band of %.4f m "
                   "(Table 1's H0/60; `shearBandRate yes`). Exact steady layer %g m thick: plug %.4f m/s, basal rate "
                   "%.2f 1/s, decay length l = %.4f m. The middle of the layer (a tent 10 m wide): its thickness (mass / "
-                  "rho'), its plug speed (the top half's mean velocity, tent-weighted), and the exact plug speed of a "
-                  "layer that thick; the excess basal strength is the stress by which that exact layer would have to be "
+                  "rho') and its slope along the base (dh/ds, from a tent 20 m wide), its plug speed (the top half's "
+                  "mean velocity, tent-weighted), and the exact plug speed of a layer that thick, driven by its weight "
+                  "and by its pressure's gradient, rho g h (S - cos(theta) dh/ds) at the base (in brackets: without the "
+                  "gradient's share, as if the layer were uniform); the excess basal strength is the stress by which that exact layer would have to be "
                   "held back to flow at the MPM's plug speed (its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n = "
                   "%.2f): what the MPM's base holds beyond Eq. (1). The script's docstring says why."
                   % (LENGTH, H, case, material["s_uo"], material["eta"], material["n"], material["gdotRef"], RHO,
                      THETA, BAND, H, e0["plug"], e0["basal_rate"], e0["decay_length"],
                      (material["n"] + 1.0)/material["n"]), "",
-                  "| cell [m] | Eq. (1)'s rate | transfer | particles per cell | window [s] | thickness [m] | plug [m/s] | "
-                  "exact plug, same thickness [m/s] | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
+                  "| cell [m] | Eq. (1)'s rate | transfer | particles per cell | window [s] | thickness [m] | dh/ds | "
+                  "plug [m/s] | exact plug, same thickness and slope (uniform) [m/s] | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
                   "particles | wall [s] |",
-                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in rows:
             for w in r["windows"]:
                 excess, tau_b = excess_strength(w, material)
-                lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %.4f | %.4f | %.2f | %.1f (%.1f %%) | "
-                             "%.4f | %d | %.0f |"
+                lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %s | %.4f | %.4f (%s) | %.2f | "
+                             "%.1f (%.1f %%) | %.4f | %d | %.0f |"
                              % (r["cell_m"], r["cells"], r["rate"], r.get("transfer", "apic"), r["ppc"], r["ppc"],
-                                w["t0"], w["t1"], w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"],
-                                excess, 100.0*excess/tau_b, w["decayLength"], r["particles"], r["wall"]))
-        lines += ["", "Histories of the middle (time [s]: thickness [m], plug speed [m/s], mean plastic rate of the "
-                  "bottom quarter [1/s]):", ""]
+                                w["t0"], w["t1"], w["thickness"],
+                                "%.5f" % w["surfaceSlope"] if "surfaceSlope" in w else "-", w["plug"], w["exactPlug"],
+                                "%.4f" % w["exactPlugUniform"] if "exactPlugUniform" in w else "-",
+                                w["plug"]/w["exactPlug"], excess, 100.0*excess/tau_b, w["decayLength"],
+                                r["particles"], r["wall"]))
+        lines += ["", "Histories of the middle (time [s]: thickness [m], dh/ds, plug speed [m/s], mean plastic rate "
+                  "of the bottom quarter [1/s]):", ""]
         for r in rows:
             lines.append("- H/%d, %dx%d, per %s, %s: " % (r["cells"], r["ppc"], r["ppc"], r["rate"],
                                                         r.get("transfer", "apic"))
-                         + "; ".join("%d: %.4f, %.4f, %.3f" % (x["t"], x["thickness"], x["plug"], x["basalPlasticRate"])
+                         + "; ".join("%d: %.4f, %.5f, %.4f, %.3f" % (x["t"], x["thickness"], x.get("surfaceSlope", 0.0),
+                                                                     x["plug"], x["basalPlasticRate"])
                                      for x in r["history"]))
     with open(os.path.join(here, "rateLayer.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
