@@ -44,6 +44,15 @@ runs whose expected values come from physics, not from tuning.
     stress of the top row of particles below a quarter of the basal one (the
     free surface carries no traction).
 
+  - Eq. (1)'s steady layer (rateLayer.py): a 2.4 m layer of Case 2's clay on a
+    no-slip slope, 4 cells through it (0.6 m, 2.7 times the rate's decay
+    length), 4x4 particles, 40 s. Its middle flows as the exact layer of its
+    thickness and surface slope would under a basal stress within 3 % of the
+    one it carries (measured -2.0 %): the MPM's base holds Eq. (1)'s strength.
+    With the rate per band (`shearBandRate yes`, band H0/60, 7.2 times thinner
+    than the cell) it holds at least 6 % more (measured +12.2 %): the option
+    strengthens the base by taking Eq. (1) at the band's rate.
+
 Usage: ciCheck.py <slideMPM> <work dir>"""
 import json
 import math
@@ -163,9 +172,22 @@ def main():
                  "ok" if ok else "FAIL"))
         if not ok:
             failures.append("bingham layer (%s)" % transfer)
+    import rateLayer
+    material = rateLayer.LAYERS[2]["material"]
+    for rate, check, bound in (("cell", lambda x: abs(x) <= 0.03, "within 3 %"),
+                               ("band", lambda x: x >= 0.06, "at least +6 %")):
+        w = rateLayer.run(work, 2, 4, 4, rate, app=app)["windows"][-1]
+        excess, tau_b = rateLayer.excess_strength(w, material)
+        ok = check(excess/tau_b)
+        print("Eq. (1)'s layer, Case 2's clay, 4 cells through it, rate per %s: %.4f m thick (dh/ds %.5f), plug %.4f "
+              "m/s against the exact %.4f: the base holds %+.1f %% of tau_b beyond Eq. (1) (%s): %s"
+              % (rate, w["thickness"], w["surfaceSlope"], w["plug"], w["exactPlug"], 100.0*excess/tau_b, bound,
+                 "ok" if ok else "FAIL"))
+        if not ok:
+            failures.append("Eq. (1)'s layer (rate per %s)" % rate)
     if failures:
         raise SystemExit("FAIL: " + ", ".join(failures))
-    print("6 passed, 0 failed")
+    print("8 passed, 0 failed")
 
 
 if __name__ == "__main__":

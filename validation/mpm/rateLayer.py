@@ -75,7 +75,7 @@ def middle(case, t):
             float(np.average(arr["plasticShearStrainRate"][bottom], weights=w[bottom])))
 
 
-def run(work, case, cells, ppc, rate, transfer="apic"):
+def run(work, case, cells, ppc, rate, transfer="apic", app="slideMPM"):
     name = "rateLayer_case%d_h%d_p%d_%s_%s" % (case, cells, ppc, rate, transfer)
     mpm = ("setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\ntransfer %s;\nwriteState no;\nprogressInterval 30;\n"
            % (cells, ppc, transfer))
@@ -85,7 +85,7 @@ def run(work, case, cells, ppc, rate, transfer="apic"):
                   scene={"length": LENGTH, "height": LAYERS[case]["height"]},
                   control={"endTime": END, "writeInterval": 2, "stopAtRest": "no"},
                   dicts={"system/mpmDict": mpm})
-    run_method("slideMPM", d)
+    run_method(app, d)
     return analyse(d, case, cells, ppc, rate, transfer)
 
 
