@@ -49,7 +49,7 @@ from paper import CASE1_RATE_FREE_SCENE  # noqa: E402
 # by 3 %: shifting.md).
 SHIFT = 0.03
 # mpmDict of the bandRate variant: Eq. (1)'s rate taken in a band of the paper's cell, H0/60, as the remoulding
-# tutorials take xi (README, "Rate counted per shear band"): does the runout then stop depending on the cell?
+# tutorials take xi (README, "Eq. (1)'s layer on a no-slip slope"): does the runout then stop depending on the cell?
 BAND_RATE = {"shearBandThickness": "0.0833333", "shearBandRate": "yes"}
 RATE_FREE_CLAY = {"youngsModulusRatio": 100*150/CASE1_RATE_FREE_SCENE["s_uo"]}   # E = 100 x Case 1's 150 Pa
 VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
