@@ -68,11 +68,18 @@ def middle(case, t):
     thickness = float((w*arr["mass"]).sum()/(RHO*HALF_WINDOW))
     x = s - mid
     L = 2.0*HALF_WINDOW
-    slope = float((arr["mass"]*x*np.maximum(1.0 - np.abs(x)/L, 0.0)).sum()/(RHO*L**3/6.0))
+    moment = x*np.maximum(1.0 - np.abs(x)/L, 0.0)/(L**3/6.0)
+    slope = float((arr["mass"]*moment).sum()/RHO)
+    # The stretching layer's longitudinal deviatoric stress, which the exact layer leaves out: the same moment of
+    # the particles' V (sigma_ss - sigma_nn) is d/ds of its depth integral, a traction per unit base [Pa].
+    c, sn = math.cos(math.radians(THETA)), math.sin(math.radians(THETA))
+    sxx, szz, sxz = arr["sigma_xx"], arr["sigma_zz"], arr["sigma_xz"]
+    deviator = (c*c - sn*sn)*(sxx - szz) - 4.0*c*sn*sxz
+    longitudinal = float((arr["volume"]*deviator*moment).sum())
     top = near & (z > 0.5*thickness)
     bottom = near & (z < 0.25*thickness)
     return (thickness, slope, float((w*u)[top].sum()/w[top].sum()),
-            float(np.average(arr["plasticShearStrainRate"][bottom], weights=w[bottom])))
+            float(np.average(arr["plasticShearStrainRate"][bottom], weights=w[bottom])), longitudinal)
 
 
 def run(work, case, cells, ppc, rate, transfer="apic", app="slideMPM"):
@@ -96,15 +103,18 @@ def analyse(d, case, cells, ppc, rate, transfer):
     r = {"case": case, "cells": cells, "ppc": ppc, "rate": rate, "transfer": transfer, "cell_m": H/cells,
          "wall": summary["wall_time_s"], "particles": summary["problem_size"], "history": [], "windows": []}
     for t in range(2, int(END) + 1, 2):
-        h, slope, plug, basal = middle(d, float(t))
-        r["history"].append({"t": t, "thickness": h, "surfaceSlope": slope, "plug": plug, "basalPlasticRate": basal})
+        h, slope, plug, basal, longitudinal = middle(d, float(t))
+        r["history"].append({"t": t, "thickness": h, "surfaceSlope": slope, "plug": plug, "basalPlasticRate": basal,
+                             "longitudinalDeviatoric": longitudinal})
     for t0, t1 in WINDOWS:
         rows = [x for x in r["history"] if t0 <= x["t"] <= t1]
         h = float(np.mean([x["thickness"] for x in rows]))
         slope = float(np.mean([x["surfaceSlope"] for x in rows]))
         plug = float(np.mean([x["plug"] for x in rows]))
+        longitudinal = float(np.mean([x["longitudinalDeviatoric"] for x in rows]))
         ex = exact(h, material=material, surface_slope=slope)
         r["windows"].append({"t0": t0, "t1": t1, "thickness": h, "surfaceSlope": slope, "plug": plug,
+                             "longitudinalDeviatoric": longitudinal,
                              "exactPlug": ex["plug"], "exactPlugUniform": exact(h, material=material)["plug"],
                              "decayLength": ex["decay_length"], "basalRate": ex["basal_rate"]})
     return r
@@ -180,25 +190,29 @@ def write_table(results):
                   "rho') and its slope along the base (dh/ds, from a tent 20 m wide), its plug speed (the top half's "
                   "mean velocity, tent-weighted), and the exact plug speed of a layer that thick, driven by its weight "
                   "and by its pressure's gradient, rho g h (S - cos(theta) dh/ds) at the base (in brackets: without the "
-                  "gradient's share, as if the layer were uniform); the excess basal strength is the stress by which that exact layer would have to be "
+                  "gradient's share, as if the layer were uniform); left out of it, the gradient of the stretching "
+                  "layer's longitudinal deviatoric stress (d/ds of the depth integral of sigma_ss - sigma_nn, from "
+                  "the particles), as a share of tau_b: the comparison's resolution; the excess basal strength is the stress by which that exact layer would have to be "
                   "held back to flow at the MPM's plug speed (its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n = "
                   "%.2f): what the MPM's base holds beyond Eq. (1). The script's docstring says why."
                   % (LENGTH, H, case, material["s_uo"], material["eta"], material["n"], material["gdotRef"], RHO,
                      THETA, BAND, H, e0["plug"], e0["basal_rate"], e0["decay_length"],
                      (material["n"] + 1.0)/material["n"]), "",
                   "| cell [m] | Eq. (1)'s rate | transfer | particles per cell | window [s] | thickness [m] | dh/ds | "
-                  "plug [m/s] | exact plug, same thickness and slope (uniform) [m/s] | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
+                  "plug [m/s] | exact plug, same thickness and slope (uniform) [m/s] | longitudinal deviator | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
                   "particles | wall [s] |",
-                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in rows:
             for w in r["windows"]:
                 excess, tau_b = excess_strength(w, material)
-                lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %s | %.4f | %.4f (%s) | %.2f | "
+                lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %s | %.4f | %.4f (%s) | %s | %.2f | "
                              "%.1f (%.1f %%) | %.4f | %d | %.0f |"
                              % (r["cell_m"], r["cells"], r["rate"], r.get("transfer", "apic"), r["ppc"], r["ppc"],
                                 w["t0"], w["t1"], w["thickness"],
                                 "%.5f" % w["surfaceSlope"] if "surfaceSlope" in w else "-", w["plug"], w["exactPlug"],
                                 "%.4f" % w["exactPlugUniform"] if "exactPlugUniform" in w else "-",
+                                "%+.1f %%" % (100.0*w["longitudinalDeviatoric"]/tau_b)
+                                if "longitudinalDeviatoric" in w else "-",
                                 w["plug"]/w["exactPlug"], excess, 100.0*excess/tau_b, w["decayLength"],
                                 r["particles"], r["wall"]))
         lines += ["", "Histories of the middle (time [s]: thickness [m], dh/ds, plug speed [m/s], mean plastic rate "
