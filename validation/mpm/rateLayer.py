@@ -159,10 +159,10 @@ def main():
                   % (args.case, cells, rate, transfer, w["thickness"], w["plug"], w["exactPlug"], w["plug"]/w["exactPlug"],
                      r["wall"]), flush=True)
     # Runs of other set-ups stay (a run replaces the stored one of its cell, particles, rate and transfer).
-    key = lambda r: (r.get("case", 1), r["cells"], r["ppc"], r["rate"], r.get("transfer", "apic"))
+    key = lambda r: (r["case"], r["cells"], r["ppc"], r["rate"], r["transfer"])
     new = {key(r) for r in results}
     results = sorted([r for r in stored if key(r) not in new] + results,
-                     key=lambda r: (r.get("case", 1), r.get("transfer", "apic"), r["ppc"], r["cells"], r["rate"]))
+                     key=lambda r: (r["case"], r["transfer"], r["ppc"], r["cells"], r["rate"]))
     with open(path, "w") as f:
         json.dump(results, f, indent=1)
     write_table(results)
@@ -171,15 +171,15 @@ def main():
 def excess_strength(w, material):
     """The basal stress [Pa] by which the exact layer as thick as the MPM's would have to be held back to flow at the
     MPM's plug speed: its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n."""
-    tau_b = RHO*G*(S - math.cos(math.radians(THETA))*w.get("surfaceSlope", 0.0))*w["thickness"]
+    tau_b = RHO*G*(S - math.cos(math.radians(THETA))*w["surfaceSlope"])*w["thickness"]
     m = (material["n"] + 1.0)/material["n"]
     return (tau_b - material["s_uo"])*(1.0 - (w["plug"]/w["exactPlug"])**(1.0/m)), tau_b
 
 
 def write_table(results):
     lines = ["# Eq. (1)'s shear layer on a no-slip base in slideMPM (written by rateLayer.py)"]
-    for case in sorted({r.get("case", 1) for r in results}):
-        rows = [r for r in results if r.get("case", 1) == case]
+    for case in sorted({r["case"] for r in results}):
+        rows = [r for r in results if r["case"] == case]
         H, material = LAYERS[case]["height"], LAYERS[case]["material"]
         e0 = exact(H, material=material)
         lines += ["", "## Table 1 Case %d's clay" % case, "",
@@ -192,35 +192,32 @@ def write_table(results):
                   "and by its pressure's gradient, rho g h (S - cos(theta) dh/ds) at the base (in brackets: without the "
                   "gradient's share, as if the layer were uniform); left out of it, the gradient of the stretching "
                   "layer's longitudinal deviatoric stress (d/ds of the depth integral of sigma_ss - sigma_nn, from "
-                  "the particles), as a share of tau_b: the comparison's resolution; the excess basal strength is the stress by which that exact layer would have to be "
-                  "held back to flow at the MPM's plug speed (its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n = "
+                  "the particles), as a share of tau_b: the comparison's resolution; the excess basal strength is the "
+                  "stress by which that exact layer would have to be held back to flow at the MPM's plug speed (its plug speed goes as (tau_b - s_uo)^m, m = (n + 1)/n = "
                   "%.2f): what the MPM's base holds beyond Eq. (1). The script's docstring says why."
                   % (LENGTH, H, case, material["s_uo"], material["eta"], material["n"], material["gdotRef"], RHO,
                      THETA, BAND, H, e0["plug"], e0["basal_rate"], e0["decay_length"],
                      (material["n"] + 1.0)/material["n"]), "",
                   "| cell [m] | Eq. (1)'s rate | transfer | particles per cell | window [s] | thickness [m] | dh/ds | "
-                  "plug [m/s] | exact plug, same thickness and slope (uniform) [m/s] | longitudinal deviator | MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | "
-                  "particles | wall [s] |",
+                  "plug [m/s] | exact plug, same thickness and slope (uniform) [m/s] | longitudinal deviator | "
+                  "MPM / exact | excess basal strength [Pa] (of tau_b) | exact l [m] | particles | wall [s] |",
                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in rows:
             for w in r["windows"]:
                 excess, tau_b = excess_strength(w, material)
-                lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %s | %.4f | %.4f (%s) | %s | %.2f | "
-                             "%.1f (%.1f %%) | %.4f | %d | %.0f |"
-                             % (r["cell_m"], r["cells"], r["rate"], r.get("transfer", "apic"), r["ppc"], r["ppc"],
-                                w["t0"], w["t1"], w["thickness"],
-                                "%.5f" % w["surfaceSlope"] if "surfaceSlope" in w else "-", w["plug"], w["exactPlug"],
-                                "%.4f" % w["exactPlugUniform"] if "exactPlugUniform" in w else "-",
-                                "%+.1f %%" % (100.0*w["longitudinalDeviatoric"]/tau_b)
-                                if "longitudinalDeviatoric" in w else "-",
-                                w["plug"]/w["exactPlug"], excess, 100.0*excess/tau_b, w["decayLength"],
-                                r["particles"], r["wall"]))
+                lines.append("| %.4f (H/%d) | per %s | %s | %dx%d | %g-%g | %.4f | %.5f | %.4f | %.4f (%.4f) | "
+                             "%+.1f %% | %.2f | %.1f (%.1f %%) | %.4f | %d | %.0f |"
+                             % (r["cell_m"], r["cells"], r["rate"], r["transfer"], r["ppc"], r["ppc"],
+                                w["t0"], w["t1"], w["thickness"], w["surfaceSlope"], w["plug"], w["exactPlug"],
+                                w["exactPlugUniform"], 100.0*w["longitudinalDeviatoric"]/tau_b,
+                                w["plug"]/w["exactPlug"], excess, 100.0*excess/tau_b, w["decayLength"], r["particles"],
+                                r["wall"]))
         lines += ["", "Histories of the middle (time [s]: thickness [m], dh/ds, plug speed [m/s], mean plastic rate "
                   "of the bottom quarter [1/s]):", ""]
         for r in rows:
             lines.append("- H/%d, %dx%d, per %s, %s: " % (r["cells"], r["ppc"], r["ppc"], r["rate"],
-                                                        r.get("transfer", "apic"))
-                         + "; ".join("%d: %.4f, %.5f, %.4f, %.3f" % (x["t"], x["thickness"], x.get("surfaceSlope", 0.0),
+                                                        r["transfer"])
+                         + "; ".join("%d: %.4f, %.5f, %.4f, %.3f" % (x["t"], x["thickness"], x["surfaceSlope"],
                                                                      x["plug"], x["basalPlasticRate"])
                                      for x in r["history"]))
     with open(os.path.join(here, "rateLayer.md"), "w") as f:
