@@ -15,7 +15,10 @@ and rateFreeStiff, rateFreeUnscaled, rateFreeWithinCell and rateFreeNoSplitting 
 shortfall against slideFoam and slideDAM is its elastic clay, the mass scaling of the grid row above the base, the
 base's contact or particle splitting, and the cellCapped variants how much is the particles crowding into the
 base's cell (README, open problem 13), and the shifted variants what particle shifting against that crowding changes
-(shifting.py has its study); --ppc sets the particles per cell and direction (2, 4, 6 and 8 were run).
+(shifting.py has its study); courantHalf, withinCell, unscaled and noSplitting ask the same of the time step
+(Courant 0.15), the base's contact, the mass scaling of the row above the base and particle splitting on any case
+(session 61: on Case 2 from H0/10 to H0/20 only the contact changes the trend); --ppc sets the particles per cell
+and direction (2, 4, 6 and 8 were run).
 
 Usage: validation/mpm/numerics.py [--cases 2] [--cells 20,40] [--ppc 4] [--variants quadratic,stiff,...]
                                   [--end-time T] [--stored] [--import DIR ...]
@@ -61,6 +64,10 @@ VARIANTS = (("apic", "APIC, E = 100 s_uo (Table 1's row)", None, None),
              None),
             ("shifted", "APIC, particle shifting %g" % SHIFT, {"particleShifting": SHIFT}, None),
             ("bandRate", "APIC, Eq. (1)'s rate and xi per H0/60 band", BAND_RATE, None),
+            ("courantHalf", "APIC, Courant number 0.15", {"courant": 0.15}, None),
+            ("withinCell", "APIC, base contact withinCell", {"baseContact": "withinCell"}, None),
+            ("unscaled", "APIC, no mass scaling of the row above the base", {"baseRowMassScaling": "no"}, None),
+            ("noSplitting", "APIC, no particle splitting", {"particleSplitting": "no"}, None),
             ("rateFreeApic", "APIC, no rate effect, 1.5 s_uo (another model)", RATE_FREE_CLAY, CASE1_RATE_FREE_SCENE),
             ("rateFree", "quadratic transfer, no rate effect, 1.5 s_uo (another model)",
              {"transfer": "quadratic", **RATE_FREE_CLAY}, CASE1_RATE_FREE_SCENE),
