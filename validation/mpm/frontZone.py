@@ -17,11 +17,12 @@ Particle stresses near the base are not used: read from the particles in the low
 thickness, the basal shear stress of the same bin changed by 5-10 % between those choices (session 61), more than
 the cells change it. Velocities and masses do not have that problem.
 
---mpm KEY=VALUE (repeatable) sets mpmDict entries of a variant, --tag names it. Writes frontZone.md and frontZone.json
+--mpm KEY=VALUE and --scene KEY=VALUE (repeatable) set mpmDict and sceneProperties entries of a variant, --tag
+names it. Writes frontZone.md and frontZone.json
 beside itself. --import analyses finished run directories case<NN>_h<cells>_p<ppc>_fields[<tag>] instead of running.
 
 Usage: validation/mpm/frontZone.py [--case 2] [--cells 10,20,40] [--ppc 4] [--end-time 20] [--times 8,10,12]
-       [--zone 20] [--mpm KEY=VALUE ...] [--tag NAME] [--keep] [--stored] [--import DIR ...]
+       [--zone 20] [--mpm KEY=VALUE ...] [--scene KEY=VALUE ...] [--tag NAME] [--keep] [--stored] [--import DIR ...]
 (after ./Allwmake; on 2 cores Case 2 to 20 s takes about 20 s at H0/10 and 2.5 minutes at H0/20; to 12 s about
 8 minutes at H0/40)"""
 import argparse
@@ -136,20 +137,25 @@ def main():
     ap.add_argument("--times", default="8,10,12")
     ap.add_argument("--zone", type=float, default=20.0)
     ap.add_argument("--mpm", action="append", default=[], help="KEY=VALUE of the variant's mpmDict")
+    ap.add_argument("--scene", action="append", default=[], help="KEY=VALUE of the variant's sceneProperties")
     ap.add_argument("--tag", default="")
     ap.add_argument("--keep", action="store_true", help="keep the run directories (fields: 1.3 GB at H0/40)")
     ap.add_argument("--stored", action="store_true")
     ap.add_argument("--import", dest="imports", nargs="*", default=[])
     args = ap.parse_args()
     times = [float(x) for x in args.times.split(",")]
-    numerics = {"writeFields": "yes"}
-    for kv in args.mpm:
-        if "=" not in kv:
-            raise SystemExit("frontZone.py: --mpm %s: not KEY=VALUE" % kv)
-        k, v = kv.split("=", 1)
-        numerics[k] = v
-    if args.mpm and not args.tag:
-        raise SystemExit("frontZone.py: --mpm needs --tag, the variant's name in frontZone.md")
+    def entries(option, pairs):
+        out = {}
+        for kv in pairs:
+            if "=" not in kv:
+                raise SystemExit("frontZone.py: --%s %s: not KEY=VALUE" % (option, kv))
+            k, v = kv.split("=", 1)
+            out[k] = v
+        return out
+    numerics = dict(writeFields="yes", **entries("mpm", args.mpm))
+    scene = entries("scene", args.scene)
+    if (args.mpm or args.scene) and not args.tag:
+        raise SystemExit("frontZone.py: --mpm and --scene need --tag, the variant's name in frontZone.md")
     path = os.path.join(here, "frontZone.json")
     store = json.load(open(path)) if os.path.isfile(path) else {"runs": []}
     if not args.stored:
@@ -165,7 +171,8 @@ def main():
         else:
             work = tempfile.mkdtemp(prefix="slideMPM_frontZone_")
             for n in [int(x) for x in args.cells.split(",")]:
-                res = run_case(args.case, n, args.ppc, work, numerics=numerics, tag="_fields" + args.tag,
+                res = run_case(args.case, n, args.ppc, work, scene=scene, numerics=numerics,
+                               tag="_fields" + args.tag,
                                end_time=args.end_time)
                 if "failed" in res:
                     raise SystemExit("frontZone.py: case %d H0/%d failed:\n%s" % (args.case, n, res["failed"]))
