@@ -11,7 +11,8 @@ The case is run to --end-time with its particles written every second. At each e
 particles, the travel of the slide's centre of mass, of its front (the foremost particle) and of the front of 99 % of
 its mass, the rear's (1 % of the mass behind it) and the centre of mass's speed along the base. At --times it cuts
 the front --zone metres into 4 m bins and gives each bin's thickness (its mass over rho' and the bin's length) and
-plug speed (the mean velocity along the base of its particles in the upper 40 % of that thickness).
+plug speed (the mean velocity along the base of its particles in the upper 40 % of that thickness), and the 95th
+percentile of its particles' plastic shear strain rate (the rate of its most sheared particles, at the base).
 
 Particle stresses near the base are not used: read from the particles in the lowest 6, 12, 25 or 40 % of the local
 thickness, the basal shear stress of the same bin changed by 5-10 % between those choices (session 61), more than
@@ -58,12 +59,13 @@ def frame(case_dir, t):
     cum = np.cumsum(m[order])/M
     return {"com": float((m*s).sum()/M), "comSpeed": float((m*u).sum()/M), "front": float(s.max()),
             "front99": float(s[order][np.searchsorted(cum, 1.0 - TAIL)]),
-            "rear": float(s[order][np.searchsorted(cum, TAIL)])}, (s, z, u, m)
+            "rear": float(s[order][np.searchsorted(cum, TAIL)])}, (s, z, u, m, arr["plasticShearStrainRate"])
 
 
 def zone(particles, zone_length):
-    """[(distance of the bin's middle behind the front, thickness, plug speed)] over the front zone_length m."""
-    s, z, u, m = particles
+    """[(distance of the bin's middle behind the front, thickness, plug speed, the 95th percentile of its particles'
+    plastic shear strain rate)] over the front zone_length m."""
+    s, z, u, m, rate = particles
     front = s.max()
     rows = []
     for lo in np.arange(front - BIN, front - zone_length - 1e-9, -BIN):
@@ -73,7 +75,8 @@ def zone(particles, zone_length):
         h = float(m[k].sum()/(RHO*BIN))
         top = z[k] > PLUG*h
         if top.any():
-            rows.append((float(front - (lo + 0.5*BIN)), h, float(u[k][top].mean())))
+            rows.append((float(front - (lo + 0.5*BIN)), h, float(u[k][top].mean()),
+                         float(np.percentile(rate[k], 95))))
     return rows
 
 
@@ -114,14 +117,16 @@ def write_md(store):
                              if h else "-")
             lines.append("| %g | %s |" % (t, " | ".join(cells)))
         for t in sorted({t for r in rs for t in r["bins"]}, key=float):
-            lines += ["", "Case %d at %s s, the front's bins: thickness [m] / plug speed [m/s]" % (case, t), "",
+            lines += ["", "Case %d at %s s, the front's bins: thickness [m] / plug speed [m/s] / the 95th percentile of "
+                      "the plastic shear strain rate [1/s] (not stored for the first variants' runs)" % (case, t), "",
                       "| behind the front [m] | " + " | ".join(name(r) for r in rs) + " |", "|---|" + "---|"*len(rs)]
             dist = sorted({b[0] for r in rs for b in r["bins"].get(t, [])})
             for x in dist:
                 row = []
                 for r in rs:
                     b = [b for b in r["bins"].get(t, []) if b[0] == x]
-                    row.append("%.2f / %.2f" % (b[0][1], b[0][2]) if b else "-")
+                    row.append(("%.2f / %.2f / " % (b[0][1], b[0][2]) + ("%.1f" % b[0][3] if len(b[0]) > 3 else "-"))
+                               if b else "-")
                 lines.append("| %g | %s |" % (x, " | ".join(row)))
     with open(os.path.join(here, "frontZone.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
