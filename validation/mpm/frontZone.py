@@ -39,7 +39,7 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, here)
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from table1 import run_case  # noqa: E402
-from layerProfile import RHO, THETA  # noqa: E402
+from cfdcase import get_entry  # noqa: E402
 from slidefoam_io import particles_on_planar_base, read_pvd  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -49,10 +49,19 @@ PLUG = 0.6      # particles above this share of the bin's thickness give its plu
 TAIL = 0.01     # share of the mass behind the rear and ahead of the front of 99 %
 
 
-def frame(case_dir, t):
+def scene_of(case_dir):
+    """The planar base's angle [deg] and the slide's density of a run directory's scene."""
+    path = os.path.join(case_dir, "constant", "sceneProperties")
+    angle, density = get_entry(path, "angle"), get_entry(path, "density")
+    if angle is None or density is None or "polyline" in open(path).read():
+        raise SystemExit("frontZone.py: %s: a planar base's angle and the slide's density are needed" % path)
+    return angle, density
+
+
+def frame(case_dir, t, angle):
     """Centre of mass, its speed, front, front of 99 % of the mass and rear (along the base, m) at the frame nearest t,
     and the particles."""
-    s, z, u, arr = particles_on_planar_base(case_dir, t, THETA)
+    s, z, u, arr = particles_on_planar_base(case_dir, t, angle)
     m = arr["mass"]
     M = m.sum()
     order = np.argsort(s)
@@ -62,7 +71,7 @@ def frame(case_dir, t):
             "rear": float(s[order][np.searchsorted(cum, TAIL)])}, (s, z, u, m, arr["plasticShearStrainRate"])
 
 
-def zone(particles, zone_length):
+def zone(particles, zone_length, density):
     """[(distance of the bin's middle behind the front, thickness, plug speed, the 95th percentile of its particles'
     plastic shear strain rate)] over the front zone_length m."""
     s, z, u, m, rate = particles
@@ -72,7 +81,7 @@ def zone(particles, zone_length):
         k = (s >= lo) & (s < lo + BIN)
         if k.sum() < 8:
             continue
-        h = float(m[k].sum()/(RHO*BIN))
+        h = float(m[k].sum()/(density*BIN))
         top = z[k] > PLUG*h
         if top.any():
             rows.append((float(front - (lo + 0.5*BIN)), h, float(u[k][top].mean()),
@@ -83,14 +92,15 @@ def zone(particles, zone_length):
 def analyse(d, case, cells, ppc, tag, times, zone_length):
     frames = read_pvd(os.path.join(d, "postProcessing", "slideMPM", "particles.pvd"))
     written = sorted({round(t) for t, _ in frames if abs(t - round(t)) < 1e-6 and round(t) % 2 == 0})
-    start, _ = frame(d, 0.0)
+    angle, density = scene_of(d)
+    start, _ = frame(d, 0.0, angle)
     history, bins = [], {}
     for t in written:
-        f, particles = frame(d, t)
+        f, particles = frame(d, t, angle)
         history.append([t] + [f[k] - start[k] if k != "comSpeed" else f[k]
                               for k in ("com", "comSpeed", "front", "front99", "rear")])
         if any(abs(t - x) < 1e-6 for x in times):
-            bins["%g" % t] = zone(particles, zone_length)
+            bins["%g" % t] = zone(particles, zone_length, density)
     return {"case": case, "cells": cells, "ppc": ppc, "tag": tag, "history": history, "bins": bins}
 
 
