@@ -25,7 +25,7 @@ beside itself. --import analyses finished run directories case<NN>_h<cells>_p<pp
 Usage: validation/mpm/frontZone.py [--case 2] [--cells 10,20,40] [--ppc 4] [--end-time 20] [--times 8,10,12]
        [--zone 20] [--mpm KEY=VALUE ...] [--scene KEY=VALUE ...] [--tag NAME] [--keep] [--stored] [--import DIR ...]
 (after ./Allwmake; on 2 cores Case 2 to 20 s takes about 20 s at H0/10 and 2.5 minutes at H0/20; to 12 s about
-8 minutes at H0/40)"""
+8 minutes at H0/40 and 26 minutes at H0/60)"""
 import argparse
 import json
 import os
