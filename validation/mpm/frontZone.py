@@ -53,7 +53,8 @@ def scene_of(case_dir):
     """The planar base's angle [deg] and the slide's density of a run directory's scene."""
     path = os.path.join(case_dir, "constant", "sceneProperties")
     angle, density = get_entry(path, "angle"), get_entry(path, "density")
-    if angle is None or density is None or "polyline" in open(path).read():
+    polyline = re.search(r"^\s*profile\s+polyline\s*;", open(path).read(), re.M)
+    if angle is None or density is None or polyline:
         raise SystemExit("frontZone.py: %s: a planar base's angle and the slide's density are needed" % path)
     return angle, density
 
@@ -187,8 +188,7 @@ def main():
             work = tempfile.mkdtemp(prefix="slideMPM_frontZone_")
             for n in [int(x) for x in args.cells.split(",")]:
                 res = run_case(args.case, n, args.ppc, work, scene=scene, numerics=numerics,
-                               tag="_fields" + args.tag,
-                               end_time=args.end_time)
+                               tag="_fields" + args.tag, end_time=args.end_time)
                 if "failed" in res:
                     raise SystemExit("frontZone.py: case %d H0/%d failed:\n%s" % (args.case, n, res["failed"]))
                 d = os.path.join(work, "case%02d_h%d_p%d_fields%s" % (args.case, n, args.ppc, args.tag))
@@ -196,6 +196,8 @@ def main():
                 print("case %d H0/%d%s: analysed %s" % (args.case, n, args.tag, d), flush=True)
                 if not args.keep:
                     shutil.rmtree(d, ignore_errors=True)
+            if not args.keep:
+                shutil.rmtree(work, ignore_errors=True)
         keys = {(r["case"], r["cells"], r["ppc"], r["tag"]) for r in new}
         store["runs"] = [r for r in store["runs"] if (r["case"], r["cells"], r["ppc"], r["tag"]) not in keys] + new
         with open(path, "w") as f:
