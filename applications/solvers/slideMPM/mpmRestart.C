@@ -81,6 +81,7 @@ void writeState(const std::string& caseDir, const RestartPoint& at, const Materi
                     at.stats.kineticEnergy, at.stats.finite ? 1.0 : 0.0});
     f.add("energy", {at.energyStart.potential, at.energyStart.kinetic, at.energyStart.elastic,
                      at.energyStart.plastic, at.boundaryWork});
+    f.add("frontResolution", at.front.values());
     f.add("count", static_cast<double>(mp.count));
     f.add("spacing", mp.spacing);
     mp.forEachView([&](const char* name, const auto& v) { f.add(name, flatten(v)); });
@@ -117,6 +118,10 @@ RestartPoint readState(const std::string& path, MaterialPoints& mp)
     at.energyStart.elastic = en[2];
     at.energyStart.plastic = en[3];
     at.boundaryWork = en[4];
+    if (f.has("frontResolution"))
+    {
+        at.front = FrontRecord::fromValues(f.vector("frontResolution"), path, "frontResolution");
+    }
     return at;
 }
 

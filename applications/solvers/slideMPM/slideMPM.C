@@ -11,6 +11,7 @@
 #include "application.H"
 #include "backgroundGrid.H"
 #include "baseFrame.H"
+#include "frontResolution.H"
 #include "materialPoints.H"
 #include "mpmControls.H"
 #include "mpmOutput.H"
@@ -109,6 +110,7 @@ int main(int argc, char** argv)
         std::unique_ptr<mpm::StepStatistics> restartStats;
         mpm::EnergyState energyStart = mpm::energyState(initial, frame, clay, sc.slide.density, d);
         double boundaryWork = 0.0;
+        mpm::FrontRecord frontRecord;
         if (restartAt > 0.0)
         {
             const std::string path = output::statePath(caseDir, restartAt, "slideMPM");
@@ -123,6 +125,7 @@ int main(int argc, char** argv)
             restartStats.reset(new mpm::StepStatistics(at.stats));
             energyStart = at.energyStart;
             boundaryWork = at.boundaryWork;
+            frontRecord = at.front;
             std::cout << "Restarting from " << path << " (t = " << t << " s, step " << step << ")\n" << std::endl;
         }
 
@@ -141,6 +144,8 @@ int main(int argc, char** argv)
         mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points, rows);
         output::RunoutSample last;
         output::StatePurge purge(caseDir, "slideMPM", controls.statesKept(rc.purgeWrite));
+        // The front zone is the slide's foremost H0: a length of the slide, not of the cell.
+        mpm::FrontResolution frontResolution(d, H0, rc.restVelocity, frontRecord);
         std::unique_ptr<mpm::PhaseTimes> times(controls.phaseTimes ? new mpm::PhaseTimes : nullptr);
         // `copied`: the particles already copied to the host at this time (their copy
         // is the largest part of a write on a GPU), else copied here.
@@ -152,12 +157,15 @@ int main(int argc, char** argv)
             last = mpm::runoutSample(hp, frame, t, initialFront, d);
             if (!logRow) return hp;
             log.write(last);
+            const std::string warning = frontResolution.observe(t, last.front, mpm::frontZone(hp, frame, H0));
+            if (!warning.empty()) std::cout << warning << "\n" << std::endl;
             energyLog.write(t, mpm::energyState(hp, frame, clay, sc.slide.density, d), energyStart, boundaryWork);
             if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
             if (controls.writeState)
             {
                 mpm::writeState(caseDir, {{t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, initialFront,
-                                          initialMass, highest, stats, energyStart, boundaryWork}, points);
+                                          initialMass, highest, stats, energyStart, boundaryWork,
+                                          frontResolution.record()}, points);
                 purge.written(t);
             }
             return hp;
@@ -338,6 +346,7 @@ int main(int argc, char** argv)
             summary.addNumber("boundary_dissipation_fraction", b.boundary*share);
             summary.addNumber("numerical_dissipation_fraction", b.numerical*share);
         }
+        frontResolution.addTo(summary, last.front);
         output::addMechanism(summary, mechanisms, mech, atRest, H0);
         summary.write(caseDir);
         if (times)
@@ -350,6 +359,7 @@ int main(int argc, char** argv)
         std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
                   << (atRest ? "at rest" : "still moving") << "), mechanism: "
                   << output::runMechanism(mechanisms, mech.name, atRest) << "\n"
+                  << (frontResolution.report(last.front).empty() ? "" : frontResolution.report(last.front) + "\n")
                   << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
                   << summary.wallTime << " s, " << particleUpdates/summary.wallTime
                   << " particle-updates/s on " << backend << "\nEnd\n" << std::endl;
