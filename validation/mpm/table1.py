@@ -98,6 +98,10 @@ def case_result(c, cells, ppc, d):
             # Absent: the mechanism came from the detector before session 25, which parted bodies by empty columns
             # only (a no-slip base keeps a remoulded film between bodies that slid apart).
             "breakawayFilm": s.get("breakaway_film_height_m"),
+            # The front's resolution (slideMPM since session 62): the fewest cells through its moving foremost H0,
+            # and the share of the runout it ran under three (frontResolution.md).
+            "frontMinCells": s.get("front_min_cells_moving"),
+            "frontUnderResolvedShare": s.get("front_travel_under_resolved_fraction"),
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
             "maxVelocity": float(r["maxVelocity"][-1]),
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}
