@@ -101,7 +101,7 @@ std::string FrontResolution::report(const double runout) const
     std::ostringstream os;
     os << std::setprecision(3) << "Front: at least " << r_.minCells << " cells through it while it moved (t = "
        << r_.minCellsTime << " s); " << r_.travel << " m of the " << runout << " m runout run under "
-       << resolvedCells << " cells" << (r_.firstTime >= 0.0 ? " (see the warning above)" : "");
+       << resolvedCells << " cells" << (r_.firstTime >= 0.0 ? " (see the warning above)" : "") << "\n";
     return os.str();
 }
 

@@ -359,7 +359,7 @@ int main(int argc, char** argv)
         std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
                   << (atRest ? "at rest" : "still moving") << "), mechanism: "
                   << output::runMechanism(mechanisms, mech.name, atRest) << "\n"
-                  << (frontResolution.report(last.front).empty() ? "" : frontResolution.report(last.front) + "\n")
+                  << frontResolution.report(last.front)
                   << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
                   << summary.wallTime << " s, " << particleUpdates/summary.wallTime
                   << " particle-updates/s on " << backend << "\nEnd\n" << std::endl;
