@@ -36,21 +36,19 @@ FrontZone frontZone(const HostPoints& hp, const BaseFrame& frame, const double l
 
 std::vector<double> FrontRecord::values() const
 {
-    return {havePrevious ? 1.0 : 0.0, previousFront, previousUnder ? 1.0 : 0.0, minCells, minCellsTime, firstTime,
-            travel};
+    return {previousFront, previousUnder ? 1.0 : 0.0, minCells, minCellsTime, firstTime, travel};
 }
 
 FrontRecord FrontRecord::fromValues(const std::vector<double>& v, const std::string& path, const std::string& key)
 {
-    if (v.size() != 7) throw scene::InputError(path, 0, key, "expected 7 values, found " + std::to_string(v.size()));
+    if (v.size() != 6) throw scene::InputError(path, 0, key, "expected 6 values, found " + std::to_string(v.size()));
     FrontRecord r;
-    r.havePrevious = v[0] != 0.0;
-    r.previousFront = v[1];
-    r.previousUnder = v[2] != 0.0;
-    r.minCells = v[3];
-    r.minCellsTime = v[4];
-    r.firstTime = v[5];
-    r.travel = v[6];
+    r.previousFront = v[0];
+    r.previousUnder = v[1] != 0.0;
+    r.minCells = v[2];
+    r.minCellsTime = v[3];
+    r.firstTime = v[4];
+    r.travel = v[5];
     return r;
 }
 
@@ -62,12 +60,11 @@ FrontResolution::FrontResolution(const double cellSize, const double zoneLength,
 
 std::string FrontResolution::observe(const double t, const double front, const FrontZone& zone)
 {
-    if (r_.havePrevious && r_.previousUnder) r_.travel += std::max(0.0, front - r_.previousFront);
+    if (r_.previousUnder) r_.travel += std::max(0.0, front - r_.previousFront);
     const bool moving = zone.speed > restVelocity_;
     const double n = cells(zone);
     r_.previousUnder = moving && n < resolvedCells;
     r_.previousFront = front;
-    r_.havePrevious = true;
     if (moving && n < r_.minCells)
     {
         r_.minCells = n;
