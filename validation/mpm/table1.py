@@ -102,6 +102,9 @@ def case_result(c, cells, ppc, d):
             # and the share of the runout it ran under three (frontResolution.md).
             "frontMinCells": s.get("front_min_cells_moving"),
             "frontUnderResolvedShare": s.get("front_travel_under_resolved_fraction"),
+            # The front of the slide's body (slideMPM since session 63), which particles thrown ahead of a fast,
+            # thin sheet do not set (sheetFlow.md).
+            "massFront": s.get("front_of_99_percent_mass_m"),
             "maxThickness": s.get("max_thickness_m"), "frontVelocity": float(r["frontVelocity"][-1]),
             "maxVelocity": float(r["maxVelocity"][-1]),
             "history": [[float(a), float(b), float(v)] for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]}

@@ -59,6 +59,22 @@ double HostPoints::rearX() const
     return x;
 }
 
+double HostPoints::massFrontX(const double share) const
+{
+    if (count == 0) return 0.0;
+    std::vector<int> order(count);
+    for (int p = 0; p < count; ++p) order[p] = p;
+    std::sort(order.begin(), order.end(), [this](int a, int b) { return position(a, 0) < position(b, 0); });
+    const double behind = share*totalMass();
+    double m = 0.0;
+    for (const int p : order)
+    {
+        m += mass(p);
+        if (m >= behind) return position(p, 0);
+    }
+    return position(order.back(), 0);
+}
+
 double HostPoints::totalMass() const
 {
     double m = 0.0;

@@ -335,6 +335,10 @@ int main(int argc, char** argv)
         summary.addNumber("particle_updates_per_second", particleUpdates/summary.wallTime);
         summary.addNumber("final_length_m", last.front - last.rear);
         summary.addNumber("max_thickness_m", last.maxThickness);
+        // The front of the slide's body, from the initial front as runout_m: particles thrown
+        // ahead of a fast, thin sheet set runout_m (the foremost one) and not this.
+        const double massFront = frame.level.arcLength(hp.massFrontX(0.99)) - initialFront;
+        summary.addNumber("front_of_99_percent_mass_m", massFront);
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
         {
             // The energy budget at the end (energy.dat has its history): where gravity's work went.
@@ -359,6 +363,7 @@ int main(int argc, char** argv)
         std::cout << "\nRunout " << std::setprecision(6) << last.front << " m at t = " << t << " s ("
                   << (atRest ? "at rest" : "still moving") << "), mechanism: "
                   << output::runMechanism(mechanisms, mech.name, atRest) << "\n"
+                  << "Front of 99 % of the mass " << std::setprecision(6) << massFront << " m\n"
                   << frontResolution.report(last.front)
                   << step << " steps, " << points.count << " particles, wall time " << std::setprecision(3)
                   << summary.wallTime << " s, " << particleUpdates/summary.wallTime

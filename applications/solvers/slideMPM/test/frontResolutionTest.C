@@ -88,6 +88,28 @@ TEST(FrontResolution, ZoneReadsAThinnedFrontAndItsSpeed)
     EXPECT_NEAR(mpm::FrontResolution(s.d, 5.0, 0.01).cells(z), 2.0, 1e-9);
 }
 
+TEST(FrontResolution, TheMassFrontIsTheBodysNotAThrownParticles)
+{
+    // The seeded slide's mass lies evenly along its 40 m: 99 % of it lies behind
+    // 39.6 m from its rear, to within a particle's spacing (0.25 m at 2x2).
+    SeededSlide s;
+    const mpm::HostPoints seeded(s.points);
+    const double rear = seeded.rearX(), front = seeded.frontX();
+    EXPECT_NEAR(front - rear, 40.0, 1e-9);
+    EXPECT_NEAR(seeded.massFrontX(0.99), rear + 39.6, 0.25);
+    EXPECT_LE(seeded.massFrontX(0.99), front);
+    EXPECT_NEAR(seeded.massFrontX(1.0), front - 0.125, 1e-9);   // the foremost particle's centre
+
+    // One particle thrown 500 m ahead moves the front by 500 m and the mass front
+    // by no more than a particle's spacing.
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.position);
+    x(0, 0) = front + 500.0;
+    Kokkos::deep_copy(s.points.position, x);
+    const mpm::HostPoints thrown(s.points);
+    EXPECT_GT(thrown.frontX(), front + 499.0);
+    EXPECT_NEAR(thrown.massFrontX(0.99), seeded.massFrontX(0.99), 0.25);
+}
+
 TEST(FrontResolution, CountsTheTravelOfAMovingFrontUnderThreeCells)
 {
     mpm::FrontResolution r(0.5, 5.0, 0.01);
