@@ -18,7 +18,9 @@ energy.dat the share of gravity's work that the discretisation lost (neither kin
 boundary's). slideDAM's front at the same time is read from ../dam/table1.json (its stored Table 1 run).
 
 --mpm KEY=VALUE (repeatable) sets mpmDict entries of a variant and --tag names it. Writes sheetFlow.md and
-sheetFlow.json beside itself; --stored rewrites the md from the json.
+sheetFlow.json beside itself, and for Table 1's set-up (H0/10, 4x4, no --mpm) sheetFlow.png: the sheet's head at 10
+and 20 s, its particles coloured by their velocity normal to and along the base; --stored rewrites the md from the
+json.
 
 Usage: validation/mpm/sheetFlow.py [--cells 10] [--ppc 4] [--end-time 40] [--times 10,20,30,40]
        [--mpm KEY=VALUE ...] [--tag NAME] [--keep] [--stored]
@@ -60,6 +62,32 @@ def measure(d, t, angle, density, cell):
             "highest": float(z.max()), "particles": int(len(s))}
 
 
+def figure(d, angle, path, times=(10.0, 20.0), length=(60.0, 100.0)):
+    """The head of the sheet at each of `times` (its foremost `length` metres): the particles coloured by their
+    velocity normal to the base, and by their velocity along it."""
+    import math
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    c, sn = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    fig, axs = plt.subplots(len(times), 2, figsize=(16, 3.2*len(times)), squeeze=False)
+    for row, t, ahead in zip(axs, times, length):
+        s, z, u, arr = particles_on_planar_base(d, t, angle)
+        vn = arr["velocity"][:, 0]*sn + arr["velocity"][:, 2]*c
+        k = s > s.max() - ahead
+        for ax, val, label, lim in ((row[0], vn, "velocity normal to the base [m/s]", (-1.5, 1.5)),
+                                    (row[1], u, "velocity along the base [m/s]", (0.0, 40.0))):
+            sc = ax.scatter(s[k], z[k], c=val[k], s=2, cmap="coolwarm" if lim[0] < 0 else "jet",
+                            vmin=lim[0], vmax=lim[1])
+            ax.set_title("t = %g s" % t)
+            ax.set_xlabel("along the base [m]")
+            ax.set_ylabel("above the base [m]")
+            fig.colorbar(sc, ax=ax, label=label)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+
+
 def energy_share(d, t):
     """numerical/gravityWork of energy.dat at the row nearest t."""
     rows = np.loadtxt(os.path.join(d, "postProcessing", "slideMPM", "energy.dat"), comments="#", ndmin=2)
@@ -94,8 +122,10 @@ def write_md(store):
              "99.9 % and 99 % of the mass, and of the centre of mass; slideDAM's front (its stored Table 1 run, "
              "`../dam/table1.json`); the share of the mass that has left the sheet (higher above the base than "
              "three times its 5 m bin's thickness and than two cells); the highest particle above the base; and the "
-             "share of gravity's work the discretisation lost (energy.dat). The script's docstring says why.", ""]
-    for run in store["runs"]:
+             "share of gravity's work the discretisation lost (energy.dat). The script's docstring says why.", "",
+             "![Case 5's head at 10 and 20 s, Table 1's set-up](sheetFlow.png)", ""]
+    # Table 1's set-up first, then its variants, then other cells.
+    for run in sorted(store["runs"], key=lambda r: (r["cells"], r["ppc"], bool(r["mpm"]), r["tag"])):
         table1 = (run["cells"], run["ppc"]) == (10, 4) and not run["mpm"]
         lines += ["## H0/%d, %dx%d particles%s%s, %.0f s of wall time" % (
                       run["cells"], run["ppc"], run["ppc"],
@@ -148,6 +178,8 @@ def main():
         d = os.path.join(work, "case%02d_h%d_p%d_sheet%s" % (CASE, args.cells, args.ppc, args.tag))
         run = analyse(d, args.cells, args.ppc, args.tag, times, mpm)
         run["wall"] = res["wall"]
+        if not mpm and args.cells == 10 and args.ppc == 4 and args.end_time >= 20.0:
+            figure(d, scene_of(d)[0], os.path.join(here, "sheetFlow.png"))
         print("Case 5 H0/%d %dx%d%s: analysed %s" % (args.cells, args.ppc, args.ppc, args.tag, d), flush=True)
         if args.keep:
             print("kept %s" % d)
