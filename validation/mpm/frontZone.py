@@ -59,17 +59,22 @@ def scene_of(case_dir):
     return angle, density
 
 
+def mass_front(s, m, share):
+    """Where `share` of the mass m lies behind, along the base (particle positions s)."""
+    order = np.argsort(s)
+    cum = np.cumsum(m[order])/m.sum()
+    return float(s[order][min(np.searchsorted(cum, share), len(s) - 1)])
+
+
 def frame(case_dir, t, angle):
     """Centre of mass, its speed, front, front of 99 % of the mass and rear (along the base, m) at the frame nearest t,
     and the particles."""
     s, z, u, arr = particles_on_planar_base(case_dir, t, angle)
     m = arr["mass"]
     M = m.sum()
-    order = np.argsort(s)
-    cum = np.cumsum(m[order])/M
     return {"com": float((m*s).sum()/M), "comSpeed": float((m*u).sum()/M), "front": float(s.max()),
-            "front99": float(s[order][np.searchsorted(cum, 1.0 - TAIL)]),
-            "rear": float(s[order][np.searchsorted(cum, TAIL)])}, (s, z, u, m, arr["plasticShearStrainRate"])
+            "front99": mass_front(s, m, 1.0 - TAIL),
+            "rear": mass_front(s, m, TAIL)}, (s, z, u, m, arr["plasticShearStrainRate"])
 
 
 def zone(particles, zone_length, density):

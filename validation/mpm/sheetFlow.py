@@ -36,7 +36,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, here)
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from frontZone import scene_of  # noqa: E402
+from frontZone import mass_front, scene_of  # noqa: E402
 from table1 import run_case  # noqa: E402
 from slidefoam_io import front_at, particles_on_planar_base  # noqa: E402
 
@@ -51,13 +51,10 @@ def measure(d, t, angle, density, cell):
     """The row of one written time t of run directory d."""
     s, z, u, arr = particles_on_planar_base(d, t, angle)
     m = arr["mass"]
-    order = np.argsort(s)
-    cum = np.cumsum(m[order])/m.sum()
-    ahead = lambda share: float(s[order][min(np.searchsorted(cum, share), len(s) - 1)])
     b = np.floor((s - s.min())/BIN).astype(int)
     thickness = (np.bincount(b, weights=m)/(density*BIN))[b]
     left = z > np.maximum(LEFT_SHEET*thickness, 2.0*cell)
-    return {"t": t, "front": float(s.max()), "front999": ahead(0.999), "front99": ahead(0.99),
+    return {"t": t, "front": float(s.max()), "front999": mass_front(s, m, 0.999), "front99": mass_front(s, m, 0.99),
             "com": float((m*s).sum()/m.sum()), "leftSheet": float(m[left].sum()/m.sum()),
             "highest": float(z.max()), "particles": int(len(s))}
 
