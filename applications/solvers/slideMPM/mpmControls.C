@@ -13,7 +13,7 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "particlesPerCell", "courant", "deltaT", "youngsModulusRatio",
                       "poissonRatio", "volumetricLocking", "stressQuadrature", "transfer", "baseBoundary", "baseContact", "baseRowMassScaling", "strainRate", "stressRate", "initialStress", "shearBandThickness", "shearBandRate", "particleSplitting", "maxParticleLength", "particleShifting", "writeFields", "writeState",
-                      "purgeState", "progressInterval", "phaseTimes"});
+                      "purgeState", "progressInterval", "phaseTimes", "writeInBackground", "nodeSums", "blockParticles"});
     MpmControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "reference");
     if (c.setting == "fast")
@@ -137,6 +137,20 @@ MpmControls MpmControls::read(const scene::Dictionary& d, const std::string& ove
         c.progressInterval = d.getScalarInRange("progressInterval", 0.0, 1e6, true, true, "progress interval [s]");
     }
     c.phaseTimes = d.getBool("phaseTimes", false);
+    if (d.found("writeInBackground")) c.writeInBackground = d.getBool("writeInBackground", false) ? 1 : 0;
+    if (d.found("nodeSums"))
+    {
+        c.nodeSums = d.getWordOneOf("nodeSums", {"perBlock", "perParticle"}) == "perBlock"
+                   ? NodeSums::perBlock : NodeSums::perParticle;
+    }
+    if (d.found("blockParticles"))
+    {
+        c.blockParticles = d.getLabel("blockParticles");
+        if (c.blockParticles < 1 || c.blockParticles > 1024)
+        {
+            d.fail("blockParticles", "particles per block must lie in [1, 1024], got " + std::to_string(c.blockParticles));
+        }
+    }
     return c;
 }
 

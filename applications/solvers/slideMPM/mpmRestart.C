@@ -13,25 +13,24 @@ namespace mpm
 namespace
 {
 
+// A host field's values, particle by particle.
 template<class View>
-std::vector<double> flatten(const View& v)
+std::vector<double> flatten(const View& h)
 {
-    auto h = Kokkos::create_mirror(v);
-    Kokkos::deep_copy(h, v);
     std::vector<double> out;
     out.reserve(h.size());
-    for (std::size_t p = 0; p < h.extent(0); ++p)
+    if constexpr (View::rank == 1)
     {
-        for (std::size_t c = 0; c < h.extent(1); ++c) out.push_back(h(p, c));
+        out.assign(h.data(), h.data() + h.size());
+    }
+    else
+    {
+        for (std::size_t p = 0; p < h.extent(0); ++p)
+        {
+            for (std::size_t c = 0; c < h.extent(1); ++c) out.push_back(h(p, c));
+        }
     }
     return out;
-}
-
-std::vector<double> flatten(const ParticleScalar& v)
-{
-    auto h = Kokkos::create_mirror(v);
-    Kokkos::deep_copy(h, v);
-    return std::vector<double>(h.data(), h.data() + h.size());
 }
 
 // The values of `key`, which must number n (one per particle and component).
@@ -71,6 +70,11 @@ void fill(const output::StateFile& f, const std::string& path, const std::string
 } // namespace
 
 void writeState(const std::string& caseDir, const RestartPoint& at, const MaterialPoints& mp)
+{
+    writeState(caseDir, at, HostPoints(mp));
+}
+
+void writeState(const std::string& caseDir, const RestartPoint& at, const HostPoints& mp)
 {
     output::StateFile f;
     at.addTo(f);

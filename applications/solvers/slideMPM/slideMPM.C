@@ -23,6 +23,7 @@
 #include "timeIntegrator.H"
 
 #include <cmath>
+#include <future>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -147,28 +148,60 @@ int main(int argc, char** argv)
         // The front zone is the slide's foremost H0: a length of the slide, not of the cell.
         mpm::FrontResolution frontResolution(d, H0, rc.restVelocity, frontRecord);
         std::unique_ptr<mpm::PhaseTimes> times(controls.phaseTimes ? new mpm::PhaseTimes : nullptr);
-        // `copied`: the particles already copied to the host at this time (their copy
-        // is the largest part of a write on a GPU), else copied here.
-        auto write = [&](double t, bool logRow = true, const mpm::HostPoints* copied = nullptr)
+        // A write copies the particles to the host and takes the runout sample
+        // (`last`, which the progress lines and error messages read); the rest
+        // (the mechanism where asked, the runout and energy logs, the front's
+        // resolution, the particle series, the restart state) is a job on that
+        // copy alone. With writeInBackground it runs beside the next steps, one
+        // job at a time and in order; its warnings are printed when it is done.
+        const bool background = controls.writeInBackground < 0 ? mpm::devicePaths : controls.writeInBackground == 1;
+        std::future<std::string> pending;
+        auto finishWrites = [&]()
+        {
+            if (!pending.valid()) return;
+            const std::string warning = pending.get();   // rethrows what the job threw
+            if (!warning.empty()) std::cout << warning << "\n" << std::endl;
+        };
+        auto write = [&](double t, bool logRow = true, bool mechanism = false)
         {
             if (times) times->lap(mpm::PhaseTimes::hostWork);
             struct Lap { mpm::PhaseTimes* t; ~Lap() { if (t) t->lap(mpm::PhaseTimes::output); } } lap{times.get()};
-            const mpm::HostPoints hp = copied ? *copied : mpm::HostPoints(points);
-            last = mpm::runoutSample(hp, frame, t, initialFront, d);
-            if (!logRow) return hp;
-            log.write(last);
-            const std::string warning = frontResolution.observe(t, last.front, mpm::frontZone(hp, frame, H0));
-            if (!warning.empty()) std::cout << warning << "\n" << std::endl;
-            energyLog.write(t, mpm::energyState(hp, frame, clay, sc.slide.density, d), energyStart, boundaryWork);
-            if (series) series->add(t, mpm::particleData(hp, frame, sc.rheology));
-            if (controls.writeState)
+            finishWrites();
+            const auto hp = std::make_shared<const mpm::HostPoints>(points);
+            last = mpm::runoutSample(*hp, frame, t, initialFront, d);
+            if (!logRow) return;
+            // What the state records, as it is now.
+            const output::RunoutSample sample = last;
+            const long long stepNow = step;
+            const double origin = schedule.origin(), interval = schedule.interval();
+            const auto index = schedule.index();
+            const mpm::StepStatistics statsNow = stats;
+            const double boundaryWorkNow = boundaryWork;
+            auto job = [&, hp, t, sample, stepNow, origin, index, interval, statsNow, boundaryWorkNow, mechanism]()
             {
-                mpm::writeState(caseDir, {{t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, initialFront,
-                                          initialMass, highest, stats, energyStart, boundaryWork,
-                                          frontResolution.record()}, points);
-                purge.written(t);
+                // The mechanism first, so that the state written holds it.
+                if (mechanism) mechanisms.emplace_back(t, mpm::detectMechanism(*hp, frame, H0, sc.g, d, sc.rheology).name);
+                log.write(sample);
+                const std::string warning = frontResolution.observe(t, sample.front, mpm::frontZone(*hp, frame, H0));
+                energyLog.write(t, mpm::energyState(*hp, frame, clay, sc.slide.density, d), energyStart, boundaryWorkNow);
+                if (series) series->add(t, mpm::particleData(*hp, frame, sc.rheology));
+                if (controls.writeState)
+                {
+                    mpm::writeState(caseDir, {{t, stepNow, origin, index, interval, mechanisms}, initialFront,
+                                              initialMass, highest, statsNow, energyStart, boundaryWorkNow,
+                                              frontResolution.record()}, *hp);
+                    purge.written(t);
+                }
+                return warning;
+            };
+            if (background) pending = std::async(std::launch::async, job);
+            else
+            {
+                std::promise<std::string> done;
+                done.set_value(job());
+                pending = done.get_future();
+                finishWrites();
             }
-            return hp;
         };
 
         const long long firstStep = step;
@@ -282,11 +315,9 @@ int main(int argc, char** argv)
             }
             if (schedule.writeDue(s))
             {
-                // The schedule and the mechanism first, so that the state written holds them.
+                // The schedule first, so that the state written holds it.
                 schedule.next();
-                const mpm::HostPoints hp(points);
-                mechanisms.emplace_back(t, mpm::detectMechanism(hp, frame, H0, sc.g, d, sc.rheology).name);
-                write(t, true, &hp);
+                write(t, true, true);
                 std::ostringstream extra;
                 extra << std::setprecision(5) << "front = " << last.front << " m  U_front = " << last.frontVelocity
                       << " m/s  |U|max = " << last.maxVelocity << " m/s";
@@ -302,6 +333,7 @@ int main(int argc, char** argv)
             }
         }
         if (!atRest) atRest = stats.maxSpeed < rc.restVelocity && slowingDown;
+        finishWrites();
 
         const mpm::HostPoints hp(points);
         const output::Mechanism mech = mpm::detectMechanism(hp, frame, H0, sc.g, d, sc.rheology);

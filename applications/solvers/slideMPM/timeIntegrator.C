@@ -41,6 +41,42 @@ struct TransferSetup
     {}
 };
 
+// Where a particle's node contributions go.
+// Into the grid through the ScatterView: a copy per thread on the host, atomics on a GPU.
+template<class Access>
+struct ScatterTarget
+{
+    Access acc;
+    KOKKOS_FORCEINLINE_FUNCTION void operator()(const int i, const int j, const Quad& q) const { addToNode(acc, i, j, q); }
+};
+
+// Into the grid with one atomic add per component (nodes outside a block's tile).
+struct AtomicTarget
+{
+    NodeField nodal;
+    KOKKOS_FORCEINLINE_FUNCTION void operator()(const int i, const int j, const Quad& q) const
+    {
+        for (int c = 0; c < 4; ++c) Kokkos::atomic_add(&nodal(i, j, c), q[c]);
+    }
+};
+
+// Into a block's tile of nodes [i0, i0 + ni) x [j0, j0 + nj) in its scratch
+// (shared) memory, laid out as the grid's nodes are; a node outside it, into
+// the grid.
+struct TileTarget
+{
+    double* tile;
+    int i0, j0, ni, nj;
+    AtomicTarget outside;
+    KOKKOS_FORCEINLINE_FUNCTION void operator()(const int i, const int j, const Quad& q) const
+    {
+        const int ti = i - i0, tj = j - j0;
+        if (ti < 0 || ti >= ni || tj < 0 || tj >= nj) return outside(i, j, q);
+        double* node = tile + 4*(ti*nj + tj);
+        for (int c = 0; c < 4; ++c) Kokkos::atomic_add(node + c, q[c]);
+    }
+};
+
 struct ParticleToGrid : TransferSetup
 {
     NodeScatter scatter;
@@ -58,14 +94,21 @@ struct ParticleToGrid : TransferSetup
 
     KOKKOS_INLINE_FUNCTION void operator()(const int p) const
     {
-        if (allQuadratic) scatterParticle<true>(p);
-        else scatterParticle<false>(p);
+        const ScatterTarget<decltype(scatter.access())> add{scatter.access()};
+        scatterOne(p, add);
     }
 
-    template<bool AllQuadratic>
-    KOKKOS_FORCEINLINE_FUNCTION void scatterParticle(const int p) const
+    // Particle p's contributions, each node's handed to add(i, j, Quad).
+    template<class Add>
+    KOKKOS_FORCEINLINE_FUNCTION void scatterOne(const int p, const Add& add) const
     {
-        auto acc = scatter.access();
+        if (allQuadratic) scatterParticle<true>(p, add);
+        else scatterParticle<false>(p, add);
+    }
+
+    template<bool AllQuadratic, class Add>
+    KOKKOS_FORCEINLINE_FUNCTION void scatterParticle(const int p, const Add& add) const
+    {
         const double xp = x(p, 0), slope = rows.slope(xp);
         const Stencil st(xp, x(p, 1) - rows.height(xp), xOrigin, invD, i0, j0, fittedBase, AllQuadratic);
         const int bx = st.bx, by = st.by;
@@ -111,8 +154,7 @@ struct ParticleToGrid : TransferSetup
                 const Quad rowDy = wx[a]*PDy, rowGy = wx[a]*PGy, rowQ = wx[a]*PQ;
                 for (int b = 0; b < 3; ++b)
                 {
-                    addToNode(acc, bx + a, by + b,
-                              wy[b]*row + (wy[b]*st.dy[b])*rowDy + (wy[b]*st.q[b])*rowQ + dwy[b]*rowGy);
+                    add(bx + a, by + b, wy[b]*row + (wy[b]*st.dy[b])*rowDy + (wy[b]*st.q[b])*rowQ + dwy[b]*rowGy);
                 }
             }
         }
@@ -124,14 +166,14 @@ struct ParticleToGrid : TransferSetup
                 const Quad rowDy = wx[a]*PDy, rowGy = wx[a]*PGy;
                 for (int b = 0; b < 3; ++b)
                 {
-                    addToNode(acc, bx + a, by + b, wy[b]*row + (wy[b]*st.dy[b])*rowDy + dwy[b]*rowGy);
+                    add(bx + a, by + b, wy[b]*row + (wy[b]*st.dy[b])*rowDy + dwy[b]*rowGy);
                 }
             }
             if (modeHere)
             {
                 for (int a = 0; a < 3; ++a)
                 {
-                    for (int b = 0; b < 3; ++b) addToNode(acc, bx + a, by + b, (wx[a]*wy[b]*st.q[b])*PQ);
+                    for (int b = 0; b < 3; ++b) add(bx + a, by + b, (wx[a]*wy[b]*st.q[b])*PQ);
                 }
             }
         }
@@ -147,7 +189,7 @@ struct ParticleToGrid : TransferSetup
             // covers. Their y weights, (1 - s)^2, would undercount it by the
             // midpoint rule's error (6 % with 2 x 2 particles).
             const double Vb = Vp*(1.0 - wy[0]);
-            for (int a = 0; a < 3; ++a) addToNode(acc, bx + a, by, Quad::of({0.0, 0.0, 0.0, wx[a]*Vb}));
+            for (int a = 0; a < 3; ++a) add(bx + a, by, Quad::of({0.0, 0.0, 0.0, wx[a]*Vb}));
             if (fill) addBaseFill(p, bx, wx);
         }
     }
@@ -189,6 +231,77 @@ struct ParticleToGrid : TransferSetup
             if (inLowest > 0.0) acc(bx + a, 0) += wx[a]*Vp*inLowest;
             if (inRest > 0.0) acc(bx + a, 1) += wx[a]*Vp*inRest;
         }
+    }
+};
+
+// Particle-to-grid by blocks (MpmControls::NodeSums::perBlock). The particles
+// are sorted by cell every sortInterval steps, so a block's run of them covers
+// a strip of a few cells. The block first finds the nodes its particles reach,
+// sums their contributions into that tile in its scratch (on a GPU, shared)
+// memory, and then adds the tile to the grid: one atomic add per node and
+// component and block, where perParticle makes 36 per particle, most of them
+// onto the same few nodes as the particles beside it. A run that reaches
+// beyond `capacity` nodes (particles split since the last sort) adds straight
+// into the grid.
+struct BlockParticleToGrid
+{
+    using Team = Kokkos::TeamPolicy<ExecutionSpace>::member_type;
+    ParticleToGrid f;
+    NodeField nodal;
+    int count = 0;
+    int block = 0;      // particles per block
+    int capacity = 0;   // nodes of a tile
+
+    static size_t scratchBytes(const int capacity) { return 4*sizeof(double)*capacity; }
+
+    KOKKOS_INLINE_FUNCTION void operator()(const Team& team) const
+    {
+        const int p0 = team.league_rank()*block;
+        const int p1 = p0 + block < count ? p0 + block : count;
+        double* tile = static_cast<double*>(team.team_shmem().get_shmem(scratchBytes(capacity)));
+        Kokkos::MinMaxScalar<int> rx, ry;
+        const TransferSetup& ts = f;
+        Kokkos::parallel_reduce(Kokkos::TeamThreadRange(team, p0, p1), [&](const int p, Kokkos::MinMaxScalar<int>& r)
+        {
+            int bx, by;
+            firstNodes(ts, p, bx, by);
+            if (bx < r.min_val) r.min_val = bx;
+            if (bx > r.max_val) r.max_val = bx;
+        }, Kokkos::MinMax<int>(rx));
+        Kokkos::parallel_reduce(Kokkos::TeamThreadRange(team, p0, p1), [&](const int p, Kokkos::MinMaxScalar<int>& r)
+        {
+            int bx, by;
+            firstNodes(ts, p, bx, by);
+            if (by < r.min_val) r.min_val = by;
+            if (by > r.max_val) r.max_val = by;
+        }, Kokkos::MinMax<int>(ry));
+        const int ni = rx.max_val - rx.min_val + 3, nj = ry.max_val - ry.min_val + 3;
+        const AtomicTarget grid{nodal};
+        if (p1 <= p0 || ni*nj > capacity)
+        {
+            Kokkos::parallel_for(Kokkos::TeamThreadRange(team, p0, p1), [&](const int p) { f.scatterOne(p, grid); });
+            return;
+        }
+        Kokkos::parallel_for(Kokkos::TeamThreadRange(team, 4*ni*nj), [&](const int k) { tile[k] = 0.0; });
+        team.team_barrier();
+        const TileTarget add{tile, rx.min_val, ry.min_val, ni, nj, grid};
+        Kokkos::parallel_for(Kokkos::TeamThreadRange(team, p0, p1), [&](const int p) { f.scatterOne(p, add); });
+        team.team_barrier();
+        // Node by node and component by component: neighbouring threads add to neighbouring addresses.
+        Kokkos::parallel_for(Kokkos::TeamThreadRange(team, 4*ni*nj), [&](const int k)
+        {
+            const double value = tile[k];
+            const int node = k/4;
+            if (value != 0.0) Kokkos::atomic_add(&nodal(add.i0 + node/nj, add.j0 + node%nj, k%4), value);
+        });
+    }
+
+    // The first of the 3 x 3 nodes supporting particle p (Stencil's bx, by).
+    KOKKOS_FORCEINLINE_FUNCTION static void firstNodes(const TransferSetup& ts, const int p, int& bx, int& by)
+    {
+        const double xp = ts.x(p, 0);
+        Stencil::firstNodes(xp, ts.x(p, 1) - ts.rows.height(xp), ts.xOrigin, ts.invD, ts.i0, ts.j0, ts.fittedBase,
+                            bx, by);
     }
 };
 
@@ -421,6 +534,8 @@ TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay
     density_(density),
     waveSpeed_(std::sqrt(clay.constrainedModulus()/density)),
     fittedBase_(controls.baseBoundary == MpmControls::BaseBoundary::fitted),
+    blockSums_(controls.nodeSums == MpmControls::NodeSums::automatic ? devicePaths
+               : controls.nodeSums == MpmControls::NodeSums::perBlock),
     rows_(gridRows(frame, controls))
 {}
 
@@ -467,7 +582,6 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
     // contribute() adds into the view (the duplicates on OpenMP, the view itself
     // with CUDA atomics): both are zeroed first.
     zeroInStream(grid.nodal);
-    grid.nodalScatter.reset_except(grid.nodal);
     ParticleToGrid f;
     static_cast<TransferSetup&>(f) = TransferSetup(mp, grid, dt, controls_.transfer, fittedBase_);
     f.cellPressure = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
@@ -495,8 +609,32 @@ void TimeIntegrator::particleToGrid(const MaterialPoints& mp, BackgroundGrid& gr
         f.rowAbove = grid.rowAboveBaseScatter;
         f.modulus = clay_.constrainedModulus();
     }
-    Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), f);
-    Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
+    if (blockSums_)
+    {
+        BlockParticleToGrid b;
+        b.f = f;
+        b.nodal = grid.nodal;
+        b.count = mp.count;
+        b.block = controls_.blockParticles;
+        // 32 KB of scratch: room for a block whose particles run from the top of
+        // one column of cells into the next (sorted by column, then row), on
+        // grids up to 200 rows high; a wider block adds straight to the grid.
+        b.capacity = 1024;
+        // A thread per particle of a block on a GPU; on the host a block is
+        // one thread's (the blocks are the parallel work there).
+        using TeamPolicy = Kokkos::TeamPolicy<ExecutionSpace>;
+        const TeamPolicy probe(1, 1);
+        const int threads = std::min(b.block, probe.team_size_max(b, Kokkos::ParallelForTag()));
+        TeamPolicy policy((mp.count + b.block - 1)/b.block, threads);
+        Kokkos::parallel_for("particleToGridByBlocks",
+                             policy.set_scratch_size(0, Kokkos::PerTeam(BlockParticleToGrid::scratchBytes(b.capacity))), b);
+    }
+    else
+    {
+        grid.nodalScatter.reset_except(grid.nodal);
+        Kokkos::parallel_for("particleToGrid", Policy(0, mp.count), f);
+        Kokkos::Experimental::contribute(grid.nodal, grid.nodalScatter);
+    }
     if (f.fill) Kokkos::Experimental::contribute(grid.baseFill, grid.baseFillScatter);
     if (f.scaleRowAbove) Kokkos::Experimental::contribute(grid.rowAboveBase, grid.rowAboveBaseScatter);
 }
@@ -616,52 +754,54 @@ double TimeIntegrator::updateGridFittedBase(BackgroundGrid& grid, const double d
     const auto fill = grid.baseFill;
     const bool scaleRowAbove = controls_.baseRowMassScaling;
     const auto above = grid.rowAboveBase;
+    const int wnj = jb - ja;
     double dissipated = 0.0;
-    Kokkos::parallel_reduce("updateGrid", Policy(ia, ib), KOKKOS_LAMBDA(const int i, double& lost)
+    // One thread per node: only the base's node (and a rear wall's column)
+    // need more than the momentum over the mass, and a thread per column left
+    // a GPU with a few hundred threads walking their columns.
+    Kokkos::parallel_reduce("updateGrid", Policy(0, (ib - ia)*wnj), KOKKOS_LAMBDA(const int n, double& lost)
     {
-        for (int j = ja; j < jb; ++j)
+        const int i = ia + n/wnj, j = ja + n%wnj;
+        double m = nodal(i, j, BackgroundGrid::mass);
+        double vx = 0.0, vy = 0.0;
+        if (m > 0.0 && j >= baseRow)
         {
-            double m = nodal(i, j, BackgroundGrid::mass);
-            double vx = 0.0, vy = 0.0;
-            if (m > 0.0 && j >= baseRow)
+            vx = nodal(i, j, BackgroundGrid::momentumX)/m;
+            vy = nodal(i, j, BackgroundGrid::momentumY)/m;
+            if (scaleRowAbove && j == baseRow + 1)
             {
-                vx = nodal(i, j, BackgroundGrid::momentumX)/m;
-                vy = nodal(i, j, BackgroundGrid::momentumY)/m;
-                if (scaleRowAbove && j == baseRow + 1)
+                // The internal force's impulse I moves the node as if its
+                // mass were dt^2 K (its own frequency 1/dt, half the
+                // central difference's limit) where its mass is less.
+                const double scaled = dt*dt*above(i, 0);
+                if (scaled > m)
                 {
-                    // The internal force's impulse I moves the node as if its
-                    // mass were dt^2 K (its own frequency 1/dt, half the
-                    // central difference's limit) where its mass is less.
-                    const double scaled = dt*dt*above(i, 0);
-                    if (scaled > m)
-                    {
-                        vx += above(i, 1)*(1.0/scaled - 1.0/m);
-                        vy += above(i, 2)*(1.0/scaled - 1.0/m);
-                    }
+                    vx += above(i, 1)*(1.0/scaled - 1.0/m);
+                    vy += above(i, 2)*(1.0/scaled - 1.0/m);
                 }
             }
-            // The base's traction acts on the base's nodes alone: theirs are the
-            // only functions that do not vanish on the base line.
-            if (j == baseRow && m > 0.0 && (!touching || touchesBase(fill(i, 0), fill(i, 1))))
-            {
-                const double volume = nodal(i, j, BackgroundGrid::volume);
-                const double fraction = volume < fullVolume ? volume/fullVolume : 1.0;
-                double tx, ty, length;
-                rows.columnTangent(xOrigin + (i0 + i)*d, d, tx, ty, length);
-                contact.apply(1, &m, &vx, &vy, tx, ty, length, fraction, dt, gSep*dt);
-            }
-            vel(i, j, 0) = vx;
-            vel(i, j, 1) = vy;
         }
-        // Only the base's node and a rear wall's column change velocities: only they are worked.
-        if (rearWall && xOrigin + (i0 + i)*d <= rearX + 1e-9*d)
+        // The base's traction acts on the base's nodes alone: theirs are the
+        // only functions that do not vanish on the base line.
+        if (j == baseRow && m > 0.0 && (!touching || touchesBase(fill(i, 0), fill(i, 1))))
         {
-            holdAtRearWall(vel, i, ja, jb);
-            lost -= columnBoundaryWork(nodal, vel, i, ja, jb);
+            const double volume = nodal(i, j, BackgroundGrid::volume);
+            const double fraction = volume < fullVolume ? volume/fullVolume : 1.0;
+            double tx, ty, length;
+            rows.columnTangent(xOrigin + (i0 + i)*d, d, tx, ty, length);
+            contact.apply(1, &m, &vx, &vy, tx, ty, length, fraction, dt, gSep*dt);
         }
-        else if (baseRow >= ja && baseRow < jb)
+        // The rear wall holds material back and lets it go.
+        const bool atRearWall = rearWall && xOrigin + (i0 + i)*d <= rearX + 1e-9*d;
+        if (atRearWall && vx < 0.0) vx = 0.0;
+        vel(i, j, 0) = vx;
+        vel(i, j, 1) = vy;
+        // Only the base's node and a rear wall's column change velocities: only
+        // they are worked (columnBoundaryWork's terms, node by node).
+        if ((atRearWall || j == baseRow) && m > 0.0)
         {
-            lost -= columnBoundaryWork(nodal, vel, i, baseRow, baseRow + 1);
+            lost -= (m*vx - nodal(i, j, BackgroundGrid::momentumX))*vx
+                  + (m*vy - nodal(i, j, BackgroundGrid::momentumY))*vy;
         }
     }, dissipated);
     return dissipated;

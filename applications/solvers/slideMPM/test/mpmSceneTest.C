@@ -149,6 +149,57 @@ TEST(SlideMPM, TransfersConserveMassAndMomentum)
     EXPECT_GT(std::fabs(qx), 1e-3*mp);   // the slide is moving: the check is not trivial
 }
 
+TEST(SlideMPM, BlockSumsAreTheParticleSums)
+{
+    // nodeSums perBlock (blocks of particles summed in scratch memory, then
+    // added to the grid) gathers the sums perParticle does, in another order:
+    // every node's mass, momentum and volume agree to round-off, for blocks
+    // within a column of cells and for blocks that run across columns.
+    scene::Interface iface;
+    iface.type = scene::Interface::Type::frictional;
+    iface.s_b = 50.0;
+    SceneRun r(blockScene(10.0, 4.0, 1.0, 600.0, 200.0, iface), controls(8, 2), 100.0*200.0);
+    r.advance(0.5);   // moved, and sorted by cell on the way
+    ASSERT_TRUE(r.grid.fit(r.stats.xmin, r.stats.xmax, r.stats.ymin, r.stats.ymax, 1ull << 30));
+    const double dt = r.integrator.stableTimeStep(r.grid.d, r.stats.maxSpeed);
+    auto sums = [&](const mpm::MpmControls::NodeSums how, const int block)
+    {
+        mpm::MpmControls c = r.controls;
+        c.nodeSums = how;
+        c.blockParticles = block;
+        const mpm::TimeIntegrator integrator(r.frame, r.clay, mpm::basalContact(r.sc.interface), c, r.sc.slide.density);
+        integrator.particleToGrid(r.points, r.grid, dt);
+        auto copy = Kokkos::create_mirror(r.grid.nodal);   // a copy, not the grid's own view on the host
+        Kokkos::deep_copy(copy, r.grid.nodal);
+        return copy;
+    };
+    const auto reference = sums(mpm::MpmControls::NodeSums::perParticle, 128);
+    double largest[4] = {0.0, 0.0, 0.0, 0.0};
+    int filled = 0;
+    for (int i = 0; i < r.grid.ni; ++i)
+        for (int j = 0; j < r.grid.nj; ++j)
+        {
+            for (int c = 0; c < 4; ++c) largest[c] = std::max(largest[c], std::fabs(reference(i, j, c)));
+            if (reference(i, j, mpm::BackgroundGrid::mass) > 0.0) ++filled;
+        }
+    ASSERT_GT(filled, 100);
+    ASSERT_GT(largest[mpm::BackgroundGrid::momentumX], 0.0);   // the slide moves: momentum is summed too
+    for (const int block : {16, 128, 1024})
+    {
+        const auto blocks = sums(mpm::MpmControls::NodeSums::perBlock, block);
+        double worst = 0.0;
+        for (int i = 0; i < r.grid.ni; ++i)
+            for (int j = 0; j < r.grid.nj; ++j)
+                for (int c = 0; c < 4; ++c)
+                {
+                    worst = std::max(worst, std::fabs(blocks(i, j, c) - reference(i, j, c))/largest[c]);
+                }
+        std::cout << "blocks of " << block << " particles: largest difference " << worst
+                  << " of the largest node value" << std::endl;
+        EXPECT_LT(worst, 1e-13) << "blocks of " << block << " particles";
+    }
+}
+
 TEST(SlideMPM, RigidBlockOnFrictionalSlopeFollowsTheSlidingLaw)
 {
     // s_uo far above every stress: the block slides as a rigid body with
