@@ -12,10 +12,13 @@
 # table row per run: backend, set-up, wall time, particle-updates/s, front.
 # RUN_TIMEOUT (seconds, default 600) stops a run that would take longer;
 # CASES lists the Table 1 runs (default case09:10x2:20; empty for none);
-# MPMDICT_EXTRA is added to each run's mpmDict (e.g. "phaseTimes yes;").
+# MPMDICT_EXTRA is added to each run's mpmDict (e.g. "phaseTimes yes;");
+# FLUME_END (default 4.1) ends the flume runs earlier; the set-up `none` runs
+# no flume.
 set -u
 backend="$1"; bin="$2"; out="$3"; shift 3
 setups="${*:-10x2 20x2 30x4 60x4}"
+[ "$setups" = none ] && setups=""
 top="$(cd "$(dirname "$0")/../.." && pwd)"
 work="$(mktemp -d)"
 mkdir -p "$out"
@@ -47,7 +50,7 @@ EOF
 }
 
 for s in $setups; do
-    runCase "$top/tutorials/kroneWrightRun15" "flume_$s" "${s%x*}" "${s#*x}" 4.1
+    runCase "$top/tutorials/kroneWrightRun15" "flume_$s" "${s%x*}" "${s#*x}" "${FLUME_END:-4.1}"
 done
 # Table 1 cases, CASE:CELLSxPPC:ENDTIME each, or CASE:tutorial:ENDTIME for the
 # tutorial's own mpmDict.

@@ -27,6 +27,36 @@ void MaterialPoints::resize(const int n)
     forEachView([n](const char*, auto& v) { Kokkos::resize(v, n); });
 }
 
+namespace
+{
+
+ParticleScalar& spareFor(MaterialPoints& mp, const ParticleScalar&) { return mp.spareScalar; }
+ParticleVector& spareFor(MaterialPoints& mp, const ParticleVector&) { return mp.spareVector; }
+ParticleTensor& spareFor(MaterialPoints& mp, const ParticleTensor&) { return mp.spareTensor; }
+
+// v in the order `order` gives (sorted p is old order(p), as BinSort::sort
+// puts it), through `spare`, which v's old storage then becomes.
+template<class View, class Order>
+void permuteField(View& v, const Order& order, View& spare)
+{
+    const int n = static_cast<int>(v.extent(0));
+    if (spare.extent(0) != v.extent(0))
+    {
+        spare = View();   // the old storage goes before the new is taken
+        spare = View(Kokkos::view_alloc(Kokkos::WithoutInitializing, "sortSpare"), v.extent(0));
+    }
+    const View from = v, to = spare;
+    Kokkos::parallel_for("sortPermute", Kokkos::RangePolicy<ExecutionSpace>(0, n), KOKKOS_LAMBDA(const int p)
+    {
+        const int q = order(p);
+        if constexpr (View::rank == 1) to(p) = from(q);
+        else for (int k = 0; k < static_cast<int>(from.extent(1)); ++k) to(p, k) = from(q, k);
+    });
+    std::swap(v, spare);
+}
+
+} // namespace
+
 void MaterialPoints::sortByCell(BackgroundGrid& grid)
 {
     grid.pressureSumsCurrent = false;   // summed in the old order
@@ -46,7 +76,8 @@ void MaterialPoints::sortByCell(BackgroundGrid& grid)
     using Op = Kokkos::BinOp1D<KeyView>;
     Kokkos::BinSort<KeyView, Op> sorter(keys, Op(nBins, 0, nBins - 1), false);
     sorter.create_permute_vector();
-    forEachView([&sorter](const char*, auto& v) { sorter.sort(v); });
+    const auto order = sorter.get_permute_vector();
+    forEachView([&](const char*, auto& v) { permuteField(v, order, spareFor(*this, v)); });
 }
 
 long long MaterialPoints::estimateCount(const scene::Scene& sc, const double d, const int ppc)

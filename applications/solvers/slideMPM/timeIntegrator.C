@@ -252,7 +252,7 @@ struct BlockParticleToGrid
     int block = 0;      // particles per block
     int capacity = 0;   // nodes of a tile
 
-    static size_t scratchBytes(const int capacity) { return 4*sizeof(double)*capacity; }
+    KOKKOS_INLINE_FUNCTION static size_t scratchBytes(const int capacity) { return 4*sizeof(double)*capacity; }
 
     KOKKOS_INLINE_FUNCTION void operator()(const Team& team) const
     {
@@ -534,8 +534,7 @@ TimeIntegrator::TimeIntegrator(const BaseFrame& frame, const UndrainedClay& clay
     density_(density),
     waveSpeed_(std::sqrt(clay.constrainedModulus()/density)),
     fittedBase_(controls.baseBoundary == MpmControls::BaseBoundary::fitted),
-    blockSums_(controls.nodeSums == MpmControls::NodeSums::automatic ? devicePaths
-               : controls.nodeSums == MpmControls::NodeSums::perBlock),
+    blockSums_(controls.nodeSums == MpmControls::NodeSums::perBlock),
     rows_(gridRows(frame, controls))
 {}
 
