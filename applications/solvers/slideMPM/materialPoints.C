@@ -34,6 +34,18 @@ ParticleScalar& spareFor(MaterialPoints& mp, const ParticleScalar&) { return mp.
 ParticleVector& spareFor(MaterialPoints& mp, const ParticleVector&) { return mp.spareVector; }
 ParticleTensor& spareFor(MaterialPoints& mp, const ParticleTensor&) { return mp.spareTensor; }
 
+// to's particle p becomes from's particle q.
+KOKKOS_INLINE_FUNCTION void copyParticle(const ParticleScalar& to, const int p, const ParticleScalar& from, const int q)
+{
+    to(p) = from(q);
+}
+
+template<class View>
+KOKKOS_INLINE_FUNCTION void copyParticle(const View& to, const int p, const View& from, const int q)
+{
+    for (int k = 0; k < static_cast<int>(View::static_extent(1)); ++k) to(p, k) = from(q, k);
+}
+
 // v in the order `order` gives (sorted p is old order(p), as BinSort::sort
 // puts it), through `spare`, which v's old storage then becomes.
 template<class View, class Order>
@@ -48,9 +60,7 @@ void permuteField(View& v, const Order& order, View& spare)
     const View from = v, to = spare;
     Kokkos::parallel_for("sortPermute", Kokkos::RangePolicy<ExecutionSpace>(0, n), KOKKOS_LAMBDA(const int p)
     {
-        const int q = order(p);
-        if constexpr (View::rank == 1) to(p) = from(q);
-        else for (int k = 0; k < static_cast<int>(from.extent(1)); ++k) to(p, k) = from(q, k);
+        copyParticle(to, p, from, order(p));
     });
     std::swap(v, spare);
 }
