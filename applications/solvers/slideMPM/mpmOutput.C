@@ -40,7 +40,7 @@ HostPoints::HostPoints(const MaterialPoints& mp)
     velocityGradient(snapshot(mp.velocityGradient)),
     mass(snapshot(mp.mass)),
     volume(snapshot(mp.volume)),
-    xi(snapshot(mp.plasticShearStrain)),
+    plasticShearStrain(snapshot(mp.plasticShearStrain)),
     strength(snapshot(mp.strength)),
     shearStrainRate(snapshot(mp.shearStrainRate)),
     plasticShearStrainRate(snapshot(mp.plasticShearStrainRate)),
@@ -141,8 +141,8 @@ output::PolyData particleData(const HostPoints& hp, const BaseFrame& frame,
         pressure[p] = -(a + b + hp.stress(p, 2))/3.0;
         tau[p] = UndrainedClay::shearStress(sig);
         su[p] = hp.strength(p);
-        ratio[p] = material.remouldingFactor(hp.xi(p));
-        xi[p] = hp.xi(p);
+        ratio[p] = material.remouldingFactor(hp.plasticShearStrain(p));
+        xi[p] = hp.plasticShearStrain(p);
         rate[p] = hp.shearStrainRate(p);
         plastic[p] = hp.plasticShearStrainRate(p);
         mass[p] = hp.mass(p);
@@ -179,7 +179,7 @@ output::Mechanism detectMechanism(const HostPoints& hp, const BaseFrame& frame, 
         q.halfHeight = hp.halfExtent(p, 1);
         q.mass = hp.mass(p);
         q.velocity = hp.velocity(p, 0);
-        q.xi = hp.xi(p);
+        q.xi = hp.plasticShearStrain(p);
     }
     output::MechanismView view;
     view.H0 = H0;

@@ -259,22 +259,21 @@ struct BlockParticleToGrid
         const int p0 = team.league_rank()*block;
         const int p1 = p0 + block < count ? p0 + block : count;
         double* tile = static_cast<double*>(team.team_shmem().get_shmem(scratchBytes(capacity)));
-        Kokkos::MinMaxScalar<int> rx, ry;
         const TransferSetup& ts = f;
-        Kokkos::parallel_reduce(Kokkos::TeamThreadRange(team, p0, p1), [&](const int p, Kokkos::MinMaxScalar<int>& r)
+        // The range of the block's first supporting nodes along the grid's axis 0 (x) or 1 (y).
+        auto nodeRange = [&](const int axis)
         {
-            int bx, by;
-            firstNodes(ts, p, bx, by);
-            if (bx < r.min_val) r.min_val = bx;
-            if (bx > r.max_val) r.max_val = bx;
-        }, Kokkos::MinMax<int>(rx));
-        Kokkos::parallel_reduce(Kokkos::TeamThreadRange(team, p0, p1), [&](const int p, Kokkos::MinMaxScalar<int>& r)
-        {
-            int bx, by;
-            firstNodes(ts, p, bx, by);
-            if (by < r.min_val) r.min_val = by;
-            if (by > r.max_val) r.max_val = by;
-        }, Kokkos::MinMax<int>(ry));
+            Kokkos::MinMaxScalar<int> range;
+            Kokkos::parallel_reduce(Kokkos::TeamThreadRange(team, p0, p1), [&](const int p, Kokkos::MinMaxScalar<int>& r)
+            {
+                int b[2];
+                firstNodes(ts, p, b[0], b[1]);
+                if (b[axis] < r.min_val) r.min_val = b[axis];
+                if (b[axis] > r.max_val) r.max_val = b[axis];
+            }, Kokkos::MinMax<int>(range));
+            return range;
+        };
+        const Kokkos::MinMaxScalar<int> rx = nodeRange(0), ry = nodeRange(1);
         const int ni = rx.max_val - rx.min_val + 3, nj = ry.max_val - ry.min_val + 3;
         const AtomicTarget grid{nodal};
         if (p1 <= p0 || ni*nj > capacity)

@@ -685,7 +685,7 @@ TEST(SlideMPM, UnrecordedStepsLeaveTheDynamicsAlone)
         {"sigma_yy", [](const mpm::HostPoints& h, int p) { return h.stress(p, 1); }},
         {"sigma_zz", [](const mpm::HostPoints& h, int p) { return h.stress(p, 2); }},
         {"sigma_xy", [](const mpm::HostPoints& h, int p) { return h.stress(p, 3); }},
-        {"xi", [](const mpm::HostPoints& h, int p) { return h.xi(p); }},
+        {"xi", [](const mpm::HostPoints& h, int p) { return h.plasticShearStrain(p); }},
         {"s_u", [](const mpm::HostPoints& h, int p) { return h.strength(p); }},
         {"shear strain rate", [](const mpm::HostPoints& h, int p) { return h.shearStrainRate(p); }},
         {"plastic shear strain rate", [](const mpm::HostPoints& h, int p) { return h.plasticShearStrainRate(p); }},
@@ -739,7 +739,7 @@ TEST(SlideMPM, StableSlideStaysPut)
     EXPECT_LT(std::fabs(late - front0), 1e-3);
     const mpm::HostPoints hp(r.points);
     double xiMax = 0.0;
-    for (int p = 0; p < hp.count; ++p) xiMax = std::max(xiMax, hp.xi(p));
+    for (int p = 0; p < hp.count; ++p) xiMax = std::max(xiMax, hp.plasticShearStrain(p));
     EXPECT_EQ(xiMax, 0.0);   // it never yielded
 }
 
