@@ -311,6 +311,11 @@ add("mpm-phase-times-not-bool", "phase times asked with a word that is not yes o
 add("mpm-band-rate-without-band", "Eq. (1)'s rate asked of a shear band whose thickness is not given",
     "system/mpmDict", mpm0[:-1] + ["shearBandRate    yes;", ""], len(mpm0), "shearBandRate", "slideMPM")
 
+add("mpm-node-sums-word", "a particle-to-grid summation slideMPM does not know (perWarp; it takes perParticle or "
+    "perBlock)", "system/mpmDict", mpm0[:-1] + ["nodeSums         perWarp;", ""], len(mpm0), "nodeSums", "slideMPM")
+add("mpm-block-particles-zero", "blocks of no particles for particle-to-grid by blocks", "system/mpmDict",
+    mpm0[:-1] + ["nodeSums         perBlock;", "blockParticles   0;", ""], len(mpm0) + 1, "blockParticles", "slideMPM")
+
 
 def main():
     for d in os.listdir(here):
