@@ -69,11 +69,6 @@ void fill(const output::StateFile& f, const std::string& path, const std::string
 
 } // namespace
 
-void writeState(const std::string& caseDir, const RestartPoint& at, const MaterialPoints& mp)
-{
-    writeState(caseDir, at, HostPoints(mp));
-}
-
 void writeState(const std::string& caseDir, const RestartPoint& at, const HostPoints& mp)
 {
     output::StateFile f;
