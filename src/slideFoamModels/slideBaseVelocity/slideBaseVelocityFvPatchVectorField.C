@@ -114,12 +114,17 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
             const vector Ut = Uc[facei] - n[facei]*(n[facei] & Uc[facei]);
             const scalar speed = mag(Ut);
             const scalar mu = rhow[facei]*nuw[facei];
-            const scalar V = slipSpeed(iface, speed, mu*deltaCoeffs[facei]);
+            const scalar k = mu*deltaCoeffs[facei];
+            const scalar V = slipSpeed(iface, speed, k);
             if (V <= 0) continue;   // stuck: the no-slip traction stays within s_b
-            // Slipping: the base resists with s_b(V) against the motion (Eq. 5).
-            const scalar tau = iface.basalStrength(V);
-            valueFraction()[facei] = sqr(n[facei]);
-            refGrad()[facei] = -(tau/mu)*Ut/speed;
+            // Slipping: the base resists with s_b(V) against the motion (Eq. 5),
+            // as the fraction s_b/(k |U_t|) of the no-slip traction on the cell's
+            // new velocity. Applied whole against the last step's direction, a
+            // frictional s_b reversed a creeping plug within one step (s_b dt/(rho h)
+            // is 0.1 m/s for Table 1 Case 7) and flipped it back the next: the
+            // base chattered about zero mean traction and let the plug creep.
+            const scalar f = iface.basalStrength(V)/(k*speed);
+            valueFraction()[facei] = sqr(n[facei]) + f*(symmTensor::I - sqr(n[facei]));
         }
     }
 
@@ -129,10 +134,17 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
 
 namespace
 {
-// valueFraction is I on a stuck face and n n on a slipping one.
+// valueFraction is n n + f (I - n n): f = 1 on a stuck face, and on a slipping
+// one the fraction of the no-slip traction that the base exerts. I - n n has
+// trace 2 (the empty direction's component included).
+inline Foam::scalar tractionFraction(const Foam::symmTensor& valueFraction)
+{
+    return 0.5*(Foam::tr(valueFraction) - 1);
+}
+
 inline bool slipping(const Foam::symmTensor& valueFraction)
 {
-    return Foam::tr(valueFraction) < 1.5;
+    return tractionFraction(valueFraction) < 1 - Foam::SMALL;
 }
 }
 
@@ -142,9 +154,12 @@ Foam::slideBaseVelocityFvPatchVectorField::gradientInternalCoeffs() const
 {
     tmp<Field<vector>> tc(directionMixedFvPatchVectorField::gradientInternalCoeffs());
     Field<vector>& c = tc.ref();
+    const scalarField& deltaCoeffs = patch().deltaCoeffs();
     forAll(c, facei)
     {
-        if (slipping(valueFraction()[facei])) c[facei] = vector::zero;
+        // The base's traction on the cell's new velocity, alike in every component.
+        const scalar f = tractionFraction(valueFraction()[facei]);
+        if (f < 1 - SMALL) c[facei] = -f*deltaCoeffs[facei]*vector::one;
     }
     return tc;
 }
@@ -155,9 +170,14 @@ Foam::slideBaseVelocityFvPatchVectorField::gradientBoundaryCoeffs() const
 {
     tmp<Field<vector>> tc(directionMixedFvPatchVectorField::gradientBoundaryCoeffs());
     Field<vector>& c = tc.ref();
+    const scalarField& deltaCoeffs = patch().deltaCoeffs();
+    const vectorField n(patch().nf());
+    const vectorField Uc(patchInternalField());
     forAll(c, facei)
     {
-        if (slipping(valueFraction()[facei])) c[facei] = refGrad()[facei];
+        // Less its normal part: the face's zero flux holds the normal velocity.
+        const scalar f = tractionFraction(valueFraction()[facei]);
+        if (f < 1 - SMALL) c[facei] = f*deltaCoeffs[facei]*n[facei]*(n[facei] & Uc[facei]);
     }
     return tc;
 }

@@ -11,7 +11,9 @@ generated from SlideFoam scenes by slideFoamCase:
               aheadHeightRatio) agrees, and a top too low stops with an error
   base        the base condition: a frictional base that never reaches s_b is the
               no-slip base to round-off; s_b = 0, s_b 20 Pa, hydroplaning and no-slip
-              order the runout as they must; volume conserved with each
+              order the runout as they must; volume conserved with each; a strong
+              block slides on a frictionless base as g sin(theta) says and stays
+              put on a frictional one that holds it
   remoulding  xi grows only in yielded slide material and weakens it: the same
               slide runs further with remoulding than without; with
               shearBandThickness xi counts a band h/t times the cell's strain
@@ -310,6 +312,21 @@ def test_base(work):
           "mechanism: the strong block on a frictionless base %s (basal slip ratio %.2f), the slurry on a no-slip base "
           "%s (%.2f)" % (summary(block)["mechanism"], summary(block)["basal_slip_ratio"],
                          summary(no_slip)["mechanism"], summary(no_slip)["basal_slip_ratio"]))
+
+    # The same block on a frictional base stronger than its weight's drive (s_b 400 Pa
+    # against rho' g H0 sin(theta) = 189 Pa) stays where it is. With s_b applied whole
+    # against the last step's direction, the traction reversed the block's creep within a
+    # step and flipped back the next, and the block crept on its base (Table 1 Case 7
+    # spread 6.3 m where the no-slip Case 6 stopped at 1.8 m; validation/cfd/README.md).
+    held = base_case(work, "base_block_s_b400", "interface frictional;\n    s_b 400;", s_uo=2000)
+    travel_held = centre_of_mass_travel(held, t)
+    alpha_held = read_field(held, t, "alpha.slide")
+    speed_held = float(np.max(np.linalg.norm(read_field(held, t, "U"), axis=1)[alpha_held > 0.5]))
+    # (Measured: 0.33 mm and 1.1 mm/s, the regularised plug's creep, against 0.09 mm and
+    # 0.6 mm/s on a no-slip base; with the traction applied whole 2.9 mm and 38 mm/s.)
+    check(abs(travel_held) < 1e-3 and speed_held < 5e-3,
+          "strong block on a frictional base that holds it (s_b 400 Pa): centre of mass moved %.2g m in %s s "
+          "(< 1 mm), its fastest cell %.2g m/s (< 5 mm/s)" % (travel_held, t, speed_held))
 
     # A mesh too short either way: the slide leaving through an open end stops the run
     # with the cfdDict key to change, and no summary (the runout would be cut short).
