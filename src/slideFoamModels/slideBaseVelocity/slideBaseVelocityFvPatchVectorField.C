@@ -158,8 +158,8 @@ Foam::slideBaseVelocityFvPatchVectorField::gradientInternalCoeffs() const
     forAll(c, facei)
     {
         // The base's traction on the cell's new velocity, alike in every component.
-        const scalar f = tractionFraction(valueFraction()[facei]);
-        if (f < 1 - SMALL) c[facei] = -f*deltaCoeffs[facei]*vector::one;
+        const symmTensor& vf = valueFraction()[facei];
+        if (slipping(vf)) c[facei] = -tractionFraction(vf)*deltaCoeffs[facei]*vector::one;
     }
     return tc;
 }
@@ -176,8 +176,8 @@ Foam::slideBaseVelocityFvPatchVectorField::gradientBoundaryCoeffs() const
     forAll(c, facei)
     {
         // Less its normal part: the face's zero flux holds the normal velocity.
-        const scalar f = tractionFraction(valueFraction()[facei]);
-        if (f < 1 - SMALL) c[facei] = f*deltaCoeffs[facei]*n[facei]*(n[facei] & Uc[facei]);
+        const symmTensor& vf = valueFraction()[facei];
+        if (slipping(vf)) c[facei] = tractionFraction(vf)*deltaCoeffs[facei]*n[facei]*(n[facei] & Uc[facei]);
     }
     return tc;
 }
