@@ -1,0 +1,201 @@
+#!/usr/bin/env python3
+"""What sets slideFoam's runout of Table 1 Case 8 (a 5 m block of s_uo 5 kPa on a frictional base of s_b 1.8 kPa,
+5 deg): the slide's downslope momentum budget from its written fields, for the default solver and for the two
+halves of cfdDict conservePlugMomentum (PIMPLE restoreCorrectorMomentum; the base's transposeShear runningMean)
+alone and together, and for the scene without Eq. (1)'s rate effect.
+
+Each second of the run: the slide's momentum P = sum(rho alpha U_x V) per metre of width, dP/dt, the length of
+base under slide (faces whose cell holds alpha > 0.01, whole: the base exerts s_b on any face its slide touches) and
+the base force the budget implies, weight along the slope less dP/dt. A block sliding on such a base is stopped
+by its own length: it decelerates once s_b times its contact passes its weight along the slope (here at 57 m).
+
+Usage: validation/cfd/frictionalBlock.py [--variants default,restore,transpose,both,rateFree] [--cells 10]
+                                          [--base-refinement 4] [--processors 2] [--work DIR]
+(after ./Allwmake; about 2 min a variant on 2 cores at H0/10, 16 min at H0/20; writes frictionalBlock.md beside this
+script at Table 1's mesh, H0/10 with H0/40 on the base, else frictionalBlock_H0_<cells>.md)"""
+import argparse
+import json
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+top = os.path.abspath(os.path.join(here, "..", ".."))
+sys.path.insert(0, os.path.join(top, "validation", "lib"))
+from cfdcase import make_case, prepare, read_field, run, run_slidefoam, set_method_entries, time_dirs  # noqa: E402
+from runner import which  # noqa: E402
+from slidefoam_io import read_runout, read_summary  # noqa: E402
+
+CASE = 8
+VARIANTS = {
+    "default": "the solver's defaults",
+    "restore": "PIMPLE restoreCorrectorMomentum yes alone",
+    "transpose": "the base's transposeShear runningMean alone",
+    "both": "cfdDict conservePlugMomentum yes (both)",
+    "rateFree": "the solver's defaults, the scene without Eq. (1)'s rate effect (eta 0)",
+}
+# Written every second; these rows go into the table.
+REPORT_TIMES = [2, 5, 10, 15, 20, 25, 30, 40, 50]
+
+
+def scene():
+    """theta [rad], s_b [Pa], rho' [kg/m3] of the case's constant/sceneProperties."""
+    text = open(os.path.join(top, "tutorials", "table1", "case%02d" % CASE, "constant", "sceneProperties")).read()
+
+    def number(key):
+        m = re.search(r"\b%s\s+([-0-9.eE+]+)\s*;" % key, text)
+        if not m:
+            raise SystemExit("tutorials/table1/case%02d/constant/sceneProperties: no key '%s'" % (CASE, key))
+        return float(m.group(1))
+    return math.radians(number("angle")), number("s_b"), number("density")
+
+
+def run_variant(variant, work, cells, refinement, processors):
+    d = make_case(os.path.join(top, "tutorials", "table1", "case%02d" % CASE), work, "case08_%s" % variant)
+    # Room for the default's 112 m: the DAM-sized mesh (1.3 x 47 m) is left at 31 s.
+    cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement, "processors": processors,
+           "reach": "200"}
+    if variant == "both":
+        cfd["conservePlugMomentum"] = "yes"
+    set_method_entries(d, "cfdDict", cfd)
+    if variant == "rateFree":
+        path = os.path.join(d, "constant", "sceneProperties")
+        text, n = re.subn(r"\beta(\s+)[-0-9.eE+]+;", r"eta\g<1>0;", open(path).read())
+        assert n == 1, path
+        open(path, "w").write(text)
+    run(d, which("slideDAM"), "-case", ".")
+    prepare(d)
+    if variant == "restore":
+        path = os.path.join(d, "system", "fvSolution")
+        text, n = re.subn(r"(PIMPLE\s*\{)", r"\1\n    restoreCorrectorMomentum yes;", open(path).read(), count=1)
+        assert n == 1, path
+        open(path, "w").write(text)
+    if variant == "transpose":
+        path = os.path.join(d, "0", "U")
+        text, n = re.subn(r"(type\s+slideBaseVelocity;)", r"\1\n        transposeShear  runningMean;", open(path).read())
+        assert n == 1, path
+        open(path, "w").write(text)
+    run_slidefoam(d, processors)
+    # Every time: slideDAM's state files already fill the first seconds' directories, which -newTimes skips.
+    run(d, "reconstructPar")
+    return d
+
+
+def budget(d, theta, s_b, rho):
+    """Per written whole second: time, P, dP/dt (backward), contact length, implied base force [N/m]."""
+    for func in ("writeCellVolumes", "writeCellCentres"):
+        run(d, "postProcess", "-func", func, "-time", "0", log="log.postProcess." + func)
+    V = read_field(d, "0", "V")
+    Cx, Cy = read_field(d, "0", "Cx"), read_field(d, "0", "Cy")
+    base = np.abs(Cy - Cy.min()) < 1e-6 * max(1.0, abs(Cy.min()))
+    order = np.argsort(Cx[base])
+    width = np.gradient(Cx[base][order])
+    # The 2D mesh's depth, from a base cell's volume: V = width x height x depth, height twice its centre's.
+    depth = V[base][order][0] / (width[0] * 2 * Cy.min())
+    a0 = np.clip(read_field(d, "0", "alpha.slide"), 0, 1)
+    area = np.sum(a0 * V) / depth
+    weight = rho * area * 9.81 * math.sin(theta)
+    rows = []
+    for t in time_dirs(d):
+        if float(t) != round(float(t)) or not os.path.exists(os.path.join(d, t, "U")):
+            continue
+        a = np.clip(read_field(d, t, "alpha.slide"), 0, 1)
+        U = read_field(d, t, "U")
+        if U.ndim == 1:
+            U = np.tile(U, (len(a), 1))
+        P = np.sum(rho * a * U[:, 0] * V) / depth
+        touching = (a[base][order] > 0.01) & (np.abs(U[base][order][:, 0]) > 1e-3)
+        rows.append([float(t), P, np.sum(width * touching)])
+    out = []
+    for (t0, P0, L0), (t1, P1, L1) in zip(rows, rows[1:]):
+        dPdt = (P1 - P0) / (t1 - t0)
+        out.append({"t": t1, "P": P1, "dPdt": dPdt, "contact": L1, "base_force": weight - dPdt,
+                    "base_stress": (weight - dPdt) / (0.5 * (L0 + L1)) if L0 + L1 > 0 else None})
+    return {"area": area, "weight": weight, "stall_contact": weight / s_b, "rows": out}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--variants", default=",".join(VARIANTS))
+    ap.add_argument("--cells", type=int, default=10)
+    ap.add_argument("--base-refinement", type=int, default=4)
+    ap.add_argument("--processors", type=int, default=2)
+    ap.add_argument("--work", default=None, help="work directory (default: a new one under /tmp); variants "
+                    "already run there (summary.json present) are read, not rerun")
+    args = ap.parse_args()
+    variants = args.variants.split(",")
+    for v in variants:
+        if v not in VARIANTS:
+            raise SystemExit("--variants: unknown variant '%s' (expected %s)" % (v, ", ".join(VARIANTS)))
+    work = args.work or os.path.join("/tmp", "slideFoam_frictionalBlock")
+    os.makedirs(work, exist_ok=True)
+    theta, s_b, rho = scene()
+    results = {}
+    for v in variants:
+        d = os.path.join(work, "case08_%s" % v)
+        summary = os.path.join(d, "postProcessing", "slideFoam", "summary.json")
+        if not os.path.exists(summary):
+            print("Case 8, %s: running slideFoam (H0/%d, H0/%d on the base, %d ranks)"
+                  % (v, args.cells, args.cells * args.base_refinement, args.processors), flush=True)
+            d = run_variant(v, work, args.cells, args.base_refinement, args.processors)
+        s = read_summary(summary)
+        r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
+        b = budget(d, theta, s_b, rho)
+        at = {t: int(np.argmin(np.abs(r["time"] - t))) for t in REPORT_TIMES}
+        results[v] = dict(b, runout=s["runout_m"], at_rest=s["at_rest"], end=s["end_time_s"], wall=s["wall_time_s"],
+                          front={t: float(r["front"][i]) for t, i in at.items()},
+                          speed={t: float(r["frontVelocity"][i]) for t, i in at.items()},
+                          thickness=float(r["maxThickness"][-1]))
+        print("%-9s runout %.1f m at %g s, wall %.0f s" % (v, s["runout_m"], s["end_time_s"], s["wall_time_s"]),
+              flush=True)
+    write_report(results, s_b, args)
+
+
+def write_report(results, s_b, args):
+    lines = ["# Table 1 Case 8 in slideFoam: the block's momentum budget",
+             "",
+             "Written by `validation/cfd/frictionalBlock.py --cells %d --base-refinement %d --processors %d`. A 5 m "
+             "block of s_uo 5 kPa on a frictional base of s_b = %.0f Pa; its weight along the slope is matched by "
+             "s_b under a contact of %.1f m. Contact: the base faces whose cell holds slide (alpha > 0.01) and moves; "
+             "base force: weight along the slope less dP/dt; base stress: that over the contact."
+             % (args.cells, args.base_refinement, args.processors, s_b,
+                next(iter(results.values()))["stall_contact"]),
+             "",
+             "| variant | runout [m] | end | max thickness at the end [m] | wall [s] |",
+             "|---|---|---|---|---|"]
+    for v, r in results.items():
+        lines.append("| %s | %.1f | %s | %.2f | %.0f |" % (VARIANTS[v], r["runout"],
+                     ("at rest by %g s" % r["end"]) if r["at_rest"] else ("%g s, not at rest" % r["end"]),
+                     r["thickness"], r["wall"]))
+    lines += ["", "| t [s] | " + " | ".join("%s: front [m], speed [m/s], contact [m], base stress [Pa]" % v
+                                              for v in results) + " |",
+              "|---|" + "---|" * len(results)]
+    for t in REPORT_TIMES:
+        cells = []
+        for v, r in results.items():
+            row = [x for x in r["rows"] if abs(x["t"] - t) < 1e-9]
+            if not row:
+                cells.append("-")
+                continue
+            x = row[0]
+            if r["speed"][t] < 0.05:
+                # Stopped: the stuck faces hold what they need, the stress over the creeping ones means nothing.
+                cells.append("%.1f, %.2f, stopped" % (r["front"][t], r["speed"][t]))
+            else:
+                cells.append("%.1f, %.2f, %.1f, %.0f" % (r["front"][t], r["speed"][t], x["contact"],
+                                                         x["base_stress"]))
+        lines.append("| %g | " % t + " | ".join(cells) + " |")
+    # Table 1's mesh writes frictionalBlock.md, another mesh frictionalBlock_H0_<cells>.md.
+    name = "frictionalBlock" + ("" if (args.cells, args.base_refinement) == (10, 4) else "_H0_%d" % args.cells)
+    with open(os.path.join(here, name + ".md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    with open(os.path.join(here, name + ".json"), "w") as f:
+        json.dump(results, f, indent=1)
+    print("wrote %s" % os.path.join(here, name + ".md"))
+
+
+if __name__ == "__main__":
+    main()
