@@ -164,8 +164,23 @@ def readme(case, row, paper):
                      "front (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
         lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
-                     "about 4 times Case 4's cells, hours on a few cores, and it has not been run "
-                     "(`validation/cfd/README.md`, \"Case 4\").")
+                     "about 4 times Case 4's cells, hours on a few cores. Its first 30 s have been run (42,530 cells, "
+                     "508 s on 2 ranks, `top slip;`): the front is at 813 m at 30 s, within 2.7 % of slideMPM's "
+                     "foremost particle at 10, 20 and 30 s and 17-20 % behind slideDAM (`validation/cfd/README.md`, "
+                     "\"Case 4\", where Case 5 follows).")
+    if case in (6, 7):
+        lines.append("- slideMPM and slideFoam stop this slide at 1.5-1.9 m where the paper has 7.9-8.7 m: Eq. (1)'s "
+                     "rate effect strengthens a collapsing face (s_u 1.86 s_uo at 1 1/s) and it stands again. Without "
+                     "it (`eta 0;` in `constant/sceneProperties`) they give 4.4-4.9 m, still short "
+                     "(`validation/mpm/rateEffect.md`, `validation/cfd/README.md`).")
+    if case == 8:
+        lines.append("- A sensitive case. The block slides on s_b = 1.8 kPa, less than its drive (2.6 kPa at 5 m), "
+                     "until its contact with the base is longer than its weight along the slope over s_b, 57 m; how "
+                     "fast it stretches decides the runout. slideFoam: 112.6 m at 100 s at H0/10, 127.0 m at H0/20, "
+                     "71-91 m with its plug-momentum options; slideMPM's block stays shorter than 57 m and slides on "
+                     "(557 m at 100 s); slideDAM 47 m. Without Eq. (1)'s rate effect (`eta 0;` in "
+                     "`constant/sceneProperties`) slideFoam stops it at 33.7 m and slideMPM at 33.9 m, the paper's "
+                     "30-35 m (`validation/cfd/frictionalBlock.md`).")
     if "spreading" in row["mechanism"] or "shear band" in row["mechanism"]:
         lines.append("- slideDAM runs this case but cannot show it: one velocity profile per column has no shear band, "
                      "no horsts and grabens and no breakaway; the comparison says so.")
