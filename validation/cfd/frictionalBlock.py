@@ -51,8 +51,14 @@ def scene():
     return math.radians(values["angle"]), values["s_b"], values["density"]
 
 
+def case_name(variant, cells, refinement):
+    """The work directory's name of a run: its mesh too, so that a run read back is never another mesh's."""
+    return "case08_%s_H0_%d_base%d" % (variant, cells, refinement)
+
+
 def run_variant(variant, work, cells, refinement, processors):
-    d = make_case(os.path.join(top, "tutorials", "table1", "case%02d" % CASE), work, "case08_%s" % variant,
+    d = make_case(os.path.join(top, "tutorials", "table1", "case%02d" % CASE), work,
+                  case_name(variant, cells, refinement),
                   scene={"eta": 0} if variant == "rateFree" else None)
     # Room for the default's 112 m: the DAM-sized mesh (1.3 x 47 m) is left at 31 s.
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": refinement, "processors": processors,
@@ -79,7 +85,8 @@ def run_variant(variant, work, cells, refinement, processors):
 
 
 def budget(d, theta, s_b, rho):
-    """Per written whole second: time, P, dP/dt (backward), contact length, implied base force [N/m]."""
+    """The slide's area and weight along the slope, the contact that stalls it, and per written whole second its
+    momentum P, dP/dt (backward), contact length [m] and the base force [N/m] and stress [Pa] the budget implies."""
     for func in ("writeCellVolumes", "writeCellCentres"):
         run(d, "postProcess", "-func", func, "-time", "0", log="log.postProcess." + func)
     V = read_field(d, "0", "V")
@@ -117,8 +124,8 @@ def main():
     ap.add_argument("--cells", type=int, default=10)
     ap.add_argument("--base-refinement", type=int, default=4)
     ap.add_argument("--processors", type=int, default=2)
-    ap.add_argument("--work", default=None, help="work directory (default: a new one under /tmp); variants "
-                    "already run there (summary.json present) are read, not rerun")
+    ap.add_argument("--work", default=None, help="work directory (default: /tmp/slideFoam_frictionalBlock); "
+                    "a variant already run there on the same mesh (its summary.json present) is read, not rerun")
     args = ap.parse_args()
     variants = args.variants.split(",")
     for v in variants:
@@ -129,7 +136,7 @@ def main():
     theta, s_b, rho = scene()
     results = {}
     for v in variants:
-        d = os.path.join(work, "case08_%s" % v)
+        d = os.path.join(work, case_name(v, args.cells, args.base_refinement))
         summary = os.path.join(d, "postProcessing", "slideFoam", "summary.json")
         if not os.path.exists(summary):
             print("Case 8, %s: running slideFoam (H0/%d, H0/%d on the base, %d ranks)"

@@ -68,7 +68,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import make_case, prepare, run, run_slidefoam, read_field, set_entry, time_dirs  # noqa: E402
+from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, read_field, set_entry, time_dirs  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
 
@@ -337,7 +337,8 @@ def test_base(work):
     # length (Table 1 Case 8: validation/cfd/frictionalBlock.md).
     sliding = base_case(work, "base_block_s_b100", "interface frictional;\n    s_b 100;", s_uo=2000)
     travel_sliding = centre_of_mass_travel(sliding, t)
-    rho, height = 1073.0, 0.3   # the flume slurry's rho' and H0 (tutorials/kroneWrightRun15)
+    flume_scene = os.path.join(FLUME, "constant", "sceneProperties")
+    rho, height = get_entry(flume_scene, "density"), get_entry(flume_scene, "height")   # the slurry's, first in the file
     base_stress = 2*(travel_block - travel_sliding)/float(t)**2*rho*height
     check(abs(base_stress/100 - 1) < 0.08,
           "strong block sliding on s_b 100 Pa: centre of mass %.3f m against %.3f m frictionless in %s s, so the base "
