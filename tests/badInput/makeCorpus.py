@@ -315,6 +315,8 @@ add("mpm-node-sums-word", "a particle-to-grid summation slideMPM does not know (
     "perBlock)", "system/mpmDict", mpm0[:-1] + ["nodeSums         perWarp;", ""], len(mpm0), "nodeSums", "slideMPM")
 add("mpm-block-particles-zero", "blocks of no particles for particle-to-grid by blocks", "system/mpmDict",
     mpm0[:-1] + ["nodeSums         perBlock;", "blockParticles   0;", ""], len(mpm0) + 1, "blockParticles", "slideMPM")
+add("cfd-outer-correctors-zero", "no outer corrector a step (PIMPLE needs at least one)", "system/cfdDict",
+    cfd0[:-1] + ["outerCorrectors 0;", ""], len(cfd0), "outerCorrectors", "slideFoamCase")
 
 
 def main():

@@ -42,6 +42,7 @@ SWITCHES = [
     ("rate_free", "_rateFree", ", no rate effect", None),
     ("wall_function", "_wallFunction", ", Eq. (1)'s wall function on the base", ("rateWallFunction", "yes")),
     ("face_viscosity", "_faceViscosity", ", the slide's viscosity at each face's rate", ("faceViscosity", "yes")),
+    ("outer_correctors", "_outer3", ", three outer correctors a step", ("outerCorrectors", 3)),
 ]
 
 
@@ -264,6 +265,9 @@ def main():
     ap.add_argument("--face-viscosity", action="store_true",
                     help="cfdDict faceViscosity yes: the slide's viscosity on each face at the face's own strain rate "
                     "instead of the mean of the two cells' (validation/cfd/rateLayer.md)")
+    ap.add_argument("--outer-correctors", action="store_true",
+                    help="cfdDict outerCorrectors 3: PIMPLE's outer correctors converge each step's momentum, which "
+                    "one SIMPLEC step loses in a flowing slurry (validation/cfd/README.md, \"The step's momentum\")")
     ap.add_argument("--top", choices=["open", "slip"], default=None,
                     help="the mesh's top (cfdDict top; default open): slip closes it with a lid that keeps the spray "
                     "a fast thin head throws into the light ambient (Case 4) in the domain")

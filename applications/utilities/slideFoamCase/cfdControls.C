@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
-                      "pressureCoupling", "conservePlugMomentum", "shearBandThickness", "rateWallFunction", "faceViscosity",
+                      "pressureCoupling", "outerCorrectors", "conservePlugMomentum", "shearBandThickness", "rateWallFunction", "faceViscosity",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -71,6 +71,14 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     {
         c.pressureCoupling = d.getWordOneOf("pressureCoupling", {"simplec", "piso"});
     }
+    if (d.found("outerCorrectors"))
+    {
+        c.outerCorrectors = d.getLabel("outerCorrectors");
+        if (c.outerCorrectors < 1 || c.outerCorrectors > 50)
+        {
+            d.fail("outerCorrectors", "must lie in [1, 50], got " + std::to_string(c.outerCorrectors));
+        }
+    }
     c.conservePlugMomentum = d.getBool("conservePlugMomentum", false);
     c.rateWallFunction = d.getBool("rateWallFunction", false);
     if (c.rateWallFunction && c.regularisation != "cap")
@@ -120,7 +128,9 @@ std::string CfdControls::describe() const
     }
     if (top != "open") os << ", " << top << " top";
     if (ambientRelaxationTime > 0.0) os << ", ambient relaxed to rest in " << ambientRelaxationTime << " s";
-    os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling
+    os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling;
+    if (outerCorrectors > 1) os << " with " << outerCorrectors << " outer correctors";
+    os
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << (rateWallFunction ? ", Eq. (1)'s wall function on the base" : "")
        << (faceViscosity ? ", the slide's viscosity at each face's rate" : "")

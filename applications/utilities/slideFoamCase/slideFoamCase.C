@@ -437,7 +437,7 @@ R"(solvers
 PIMPLE
 {
     momentumPredictor   yes;
-    nOuterCorrectors    1;
+    nOuterCorrectors    )" + std::to_string(c.outerCorrectors) + R"(;
     nCorrectors         3;
 )" + std::string(c.conservePlugMomentum ?
 "    // cfdDict conservePlugMomentum: correctors 2 and 3 give back the momentum they take.\n    restoreCorrectorMomentum yes;\n" : "") + R"(    nNonOrthogonalCorrectors 0;
