@@ -318,6 +318,10 @@ add("mpm-block-particles-zero", "blocks of no particles for particle-to-grid by 
 add("cfd-outer-correctors-zero", "no outer corrector a step (PIMPLE needs at least one)", "system/cfdDict",
     cfd0[:-1] + ["outerCorrectors 0;", ""], len(cfd0), "outerCorrectors", "slideFoamCase")
 
+add("cfd-face-force-one-outer", "gravity's along-slope part as a face force with one outer corrector (the SIMPLEC step "
+    "takes it with a momentum error)", "system/cfdDict", cfd0[:-1] + ["alongSlopeGravity faceForce;", ""], len(cfd0),
+    "alongSlopeGravity", "slideFoamCase")
+
 
 def main():
     for d in os.listdir(here):

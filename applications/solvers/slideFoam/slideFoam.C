@@ -63,6 +63,7 @@ Description
 #include "slideBaseVelocityFvPatchVectorField.H"
 #include "outputContract.H"
 #include "fluxReconstruction.H"
+#include "alongSlopeFaceForce.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -146,8 +147,8 @@ int main(int argc, char *argv[])
                         talphaPhi1Corr0.clear();
                     }
 
-                    gh = (g & mesh.C()) - ghRef;
-                    ghf = (g & mesh.Cf()) - ghRef;
+                    gh = ((g - gAlongSlope) & mesh.C()) - ghRef;
+                    ghf = ((g - gAlongSlope) & mesh.Cf()) - ghRef;
 
                     MRF.update();
 

@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
-                      "pressureCoupling", "outerCorrectors", "conservePlugMomentum", "shearBandThickness", "rateWallFunction", "faceViscosity",
+                      "pressureCoupling", "outerCorrectors", "alongSlopeGravity", "conservePlugMomentum", "shearBandThickness", "rateWallFunction", "faceViscosity",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -79,6 +79,16 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
             d.fail("outerCorrectors", "must lie in [1, 50], got " + std::to_string(c.outerCorrectors));
         }
     }
+    if (d.found("alongSlopeGravity"))
+    {
+        c.alongSlopeGravity = d.getWordOneOf("alongSlopeGravity", {"pressure", "faceForce"});
+        if (c.alongSlopeGravity == "faceForce" && c.outerCorrectors < 3)
+        {
+            d.fail("alongSlopeGravity", "faceForce needs outerCorrectors 3 or more: one SIMPLEC step takes the face "
+                   "force with a momentum error (the flume's front +11 %), got outerCorrectors "
+                   + std::to_string(c.outerCorrectors));
+        }
+    }
     c.conservePlugMomentum = d.getBool("conservePlugMomentum", false);
     c.rateWallFunction = d.getBool("rateWallFunction", false);
     if (c.rateWallFunction && c.regularisation != "cap")
@@ -130,6 +140,7 @@ std::string CfdControls::describe() const
     if (ambientRelaxationTime > 0.0) os << ", ambient relaxed to rest in " << ambientRelaxationTime << " s";
     os << ", regularisation " << regularisation << ", pressure coupling " << pressureCoupling;
     if (outerCorrectors > 1) os << " with " << outerCorrectors << " outer correctors";
+    if (alongSlopeGravity != "pressure") os << ", gravity's along-slope part as a face force";
     os
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
        << (rateWallFunction ? ", Eq. (1)'s wall function on the base" : "")

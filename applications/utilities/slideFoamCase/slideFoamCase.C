@@ -154,6 +154,11 @@ int main(int argc, char** argv)
             cfdDict.fail("ambientRelaxationTime", "damps a light ambient only; this scene's ambient is water, "
                          "whose drag and added mass act on the slide (constant/sceneProperties ambient)");
         }
+        if (c.alongSlopeGravity == "faceForce" && !sc.base.isPlanar())
+        {
+            cfdDict.fail("alongSlopeGravity", "faceForce splits gravity in the slope's frame, which a planar base has;"
+                         " this scene's base is a polyline, meshed with gravity down (constant/sceneProperties base)");
+        }
         const double H0 = sc.slide.height;
         const PatchGroups patches = patchGroups(sc, c);
         const bool lid = c.top == "slip";
@@ -439,7 +444,9 @@ PIMPLE
     momentumPredictor   yes;
     nOuterCorrectors    )" + std::to_string(c.outerCorrectors) + R"(;
     nCorrectors         3;
-)" + std::string(c.conservePlugMomentum ?
+)" + std::string(c.alongSlopeGravity == "faceForce" ?
+"    // cfdDict alongSlopeGravity faceForce: p_rgh takes gravity's normal part only.\n    alongSlopeFaceForce yes;\n" : "")
+   + std::string(c.conservePlugMomentum ?
 "    // cfdDict conservePlugMomentum: correctors 2 and 3 give back the momentum they take.\n    restoreCorrectorMomentum yes;\n" : "") + R"(    nNonOrthogonalCorrectors 0;
 )" + std::string(c.pressureCoupling == "simplec" ?
 "    // SIMPLEC: the pressure moves a plug whole (cfdDict pressureCoupling).\n    consistent          yes;\n" :
