@@ -53,7 +53,8 @@ def counting(r):
 
 def case_name(c, cells, mesh):
     """The work directory's name of a run: caseNN_H0_n with what the row's key adds (--continue reads it back)."""
-    return "case%02d_H0_%d" % (c, cells) + "".join(suffix for key, suffix, _, _ in SWITCHES if mesh.get(key))
+    return ("case%02d_H0_%d" % (c, cells) + "".join(suffix for key, suffix, _, _ in SWITCHES if mesh.get(key))
+            + ("_dt%g" % mesh["max_delta_t"] if mesh.get("max_delta_t") else ""))
 
 
 # Mesh and run options passed to cfdDict as numbers: (option and row key, cfdDict entry, help).
@@ -79,7 +80,7 @@ def unresolved_note(r):
 
 
 def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
-    """mesh: refinement, max_co, xi_per_cell, rate_free, top and CFD_ENTRIES' keys (None: the tutorial's or
+    """mesh: refinement, max_co, max_delta_t, xi_per_cell, rate_free, top and CFD_ENTRIES' keys (None: the tutorial's or
     slideDAM's)."""
     src = os.path.join(top, "tutorials", "table1", "case%02d" % c)
     cfd = {"setting": "fast", "cellsPerHeight": cells, "baseRefinement": mesh["refinement"], "processors": processors}
@@ -91,7 +92,8 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
     for key, entry, _ in CFD_ENTRIES:
         if mesh.get(key) is not None:
             cfd[entry] = "%.6g" % mesh[key]
-    control = {"maxCo": mesh["max_co"], "maxAlphaCo": mesh["max_co"]} if mesh.get("max_co") else None
+    control = dict({"maxCo": mesh["max_co"], "maxAlphaCo": mesh["max_co"]} if mesh.get("max_co") else {},
+                   **({"maxDeltaT": mesh["max_delta_t"]} if mesh.get("max_delta_t") else {})) or None
     # The tutorial's cfdDict with the mesh set: what else it says (a scene's shearBandThickness) is kept.
     d = make_case(src, work, case_name(c, cells, mesh), control=control,
                   scene=CASE1_RATE_FREE_SCENE if mesh.get("rate_free") else None)
@@ -150,7 +152,8 @@ def case_row(c, cells, d, dam_runout, mesh):
 
 def row_key(r):
     # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
-    return (r["case"], r["cells"], base_cells(r)) + tuple(bool(r.get(key)) for key, _, _, _ in SWITCHES)
+    return ((r["case"], r["cells"], base_cells(r)) + tuple(bool(r.get(key)) for key, _, _, _ in SWITCHES)
+            + (r.get("max_delta_t") or 0.0,))
 
 
 def scene_dam_runout(c):
@@ -169,13 +172,14 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from). ambient_relaxation:
     the light ambient relaxes to rest on this time scale [s] from the leg's start on (cfdDict ambientRelaxationTime
     and the constant/fvOptions slideFoamCase writes for it)."""
-    m = re.match(r"case(\d+)_H0_(\d+)%s$" % "".join("(%s)?" % suffix for _, suffix, _, _ in SWITCHES),
+    m = re.match(r"case(\d+)_H0_(\d+)%s(?:_dt([0-9.e+-]+))?$" % "".join("(%s)?" % suffix for _, suffix, _, _ in SWITCHES),
                  os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
     key = row_key(dict({"case": int(m.group(1)), "cells": int(m.group(2)),
                         "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)},
-                       **{key: bool(m.group(3 + i)) for i, (key, _, _, _) in enumerate(SWITCHES)}))
+                       **{key: bool(m.group(3 + i)) for i, (key, _, _, _) in enumerate(SWITCHES)},
+                       max_delta_t=float(m.group(3 + len(SWITCHES))) if m.group(3 + len(SWITCHES)) else None))
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
         raise SystemExit("--continue: table1.json has no run of Case %d at H0/%d to continue" % key[:2])
@@ -222,7 +226,7 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
         s = read_summary(summary)
     legs = [leg if len(leg) > 3 else leg + [old["n"]] for leg in legs]
     legs = legs + [[legs[-1][1], s["end_time_s"], s["wall_time_s"], s["problem_size"]]]
-    mesh = {k: old.get(k) for k in ["refinement", "max_co", "top", "ambient_relaxation_steps"]
+    mesh = {k: old.get(k) for k in ["refinement", "max_co", "max_delta_t", "top", "ambient_relaxation_steps"]
             + [e[0] for e in SWITCHES] + [e[0] for e in CFD_ENTRIES]}
     # A case carried on to a longer mesh (bin/tools/extendSlideMesh) says how long in its cfdDict.
     for k, entry, _ in CFD_ENTRIES:
@@ -253,6 +257,10 @@ def main():
         ap.add_argument("--" + key.replace("_", "-"), type=float, default=None, help=text)
     ap.add_argument("--max-co", type=float, default=None,
                     help="maxCo and maxAlphaCo of the run (default: the tutorial's controlDict, 0.5)")
+    ap.add_argument("--max-delta-t", type=float, default=None,
+                    help="maxDeltaT of the run [s] (default: the tutorial's controlDict, 0.05 s): on a frictional base "
+                    "the lagged traction over-brakes a plug at a long step (validation/cfd/README.md, \"The base's "
+                    "traction and the time step\")")
     ap.add_argument("--xi-per-cell", action="store_true",
                     help="xi counts the strain of each cell (cfdDict shearBandThickness 0) instead of the tutorial's "
                     "shear bands of H0/60: the remoulding Cases 10-13 as the CFD ran them until session 29")
@@ -295,7 +303,8 @@ def main():
         for n in cells:
             mesh = dict({key: getattr(args, key) for key, _, _ in CFD_ENTRIES},
                         **{key: getattr(args, key) for key, _, _, _ in SWITCHES},
-                        refinement=args.base_refinement, max_co=args.max_co, top=args.top)
+                        refinement=args.base_refinement, max_co=args.max_co, max_delta_t=args.max_delta_t,
+                        top=args.top)
             r = run_case(c, n, args.processors, work, mesh, args.scene_end)
             results.append(r)
             print(json.dumps({k: v for k, v in r.items() if k != "history"}), flush=True)
@@ -334,6 +343,8 @@ def main():
             mesh += ", %g m behind" % r["behind"]
         if r.get("max_co"):
             mesh += ", maxCo %g" % r["max_co"]
+        if r.get("max_delta_t"):
+            mesh += ", maxDeltaT %g s" % r["max_delta_t"]
         if r.get("top") == "slip":
             mesh += ", lid on top"
         if r.get("ambient_relaxation_steps"):
