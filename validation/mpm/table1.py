@@ -6,7 +6,7 @@ the error against the paper, the detected mechanism, the wall time),
 table1.png (bars) and table1.json (the raw results).
 
 Usage: validation/mpm/table1.py [--cells 10,20] [--ppc 4] [--cases 1,2,3] [--fine] [--stored]
-                                 [--end-time T] [--continue CASE_DIR --end-time T]
+                                 [--end-time T] [--continue CASE_DIR --end-time T] [--import ROWS_JSON]
 (after ./Allwmake; defaults: cell H0/10 with the paper's 4 x 4 particles, all cases;
 --fine adds the runs of FINE, the cases whose reference set-up is finer than the table's, about
 28 minutes on 2 cores; --end-time stops the runs at T s instead of the scene's end,
@@ -45,7 +45,10 @@ CAUCHY = " (Cauchy stress rate, before session 40)"
 
 def on_gpu(r):
     """" on CUDA" where row r ran on a GPU (SLIDEFOAM_SLIDEMPM_BINARY): its wall time is not this machine's."""
-    return " on CUDA" if (r.get("backend") or "").startswith("Cuda") else ""
+    if not (r.get("backend") or "").startswith("Cuda"):
+        return ""
+    # deviceTable1.sh runs several cases at once on the GPU: each one's wall time is then its share's.
+    return " on CUDA" + (", %d runs sharing the GPU" % r["lanes"] if r.get("lanes", 1) > 1 else "")
 
 
 def cauchy_rate(r):
@@ -172,6 +175,9 @@ def main():
     ap.add_argument("--stored", action="store_true", help="rewrite table1.md/png from table1.json without running")
     ap.add_argument("--end-time", type=float, default=None,
                     help="stop the runs at this time instead of the scene's end (the table says so)")
+    ap.add_argument("--import", dest="imported", metavar="ROWS_JSON",
+                    help="store the rows of runs made elsewhere (deviceTable1.sh's rows.json on a GPU) and rewrite "
+                         "the table, as --stored does")
     ap.add_argument("--continue", dest="cont", metavar="CASE_DIR",
                     help="run a kept case directory of an earlier run on from its latest state to --end-time, "
                          "and store its row")
@@ -183,6 +189,10 @@ def main():
     paper = paper_table()
     work = tempfile.mkdtemp(prefix="slideMPM_table1_")
     results = [continue_case(args.cont, args.end_time)] if args.cont else []
+    if args.imported:
+        # A failed row (a run that broke there) is kept as what it is; cut-off runs never reach rows.json.
+        results = json.load(open(args.imported))
+        args.stored = True
     for c in ([] if args.stored or args.cont else cases):
         for h in cells:
             res = run_case(c, h, args.ppc, work, end_time=args.end_time)
