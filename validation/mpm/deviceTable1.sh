@@ -1,10 +1,11 @@
 #!/bin/bash
-# Table 1 runs of slideMPM on a lent GPU (session 69): table1.py in lanes that
-# share the GPU, each lane running its cases one after the other, every case in a
-# copy of the repository of its own (table1.py keeps its rows beside itself), so
-# that a run cut off by the call's limit loses that run alone. A slideMPM step on
-# a GPU waits on its host part for about half its time, so two or three runs at
-# once fill the GPU better than one; their wall times are then not one run's.
+# Table 1 runs of slideMPM on a lent GPU (session 69): table1.py in lanes, each
+# lane running its cases one after the other, every case in a copy of the
+# repository of its own (table1.py keeps its rows beside itself), so that a run
+# cut off by the call's limit loses that run alone. Give one lane: on an H200,
+# Case 2 at H0/60 and H0/80 and Case 1 at H0/60 took 46, 94 and 76 s one after the
+# other, but in three lanes at once none of them had ended after 290 s (processes
+# take turns on a GPU; `device.md`, session 69).
 #
 #   validation/mpm/deviceTable1.sh BINARY OUTDIR LIMIT_S "CASE:CELLS[:END] ..." ["..." ...]
 #

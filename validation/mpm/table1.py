@@ -73,7 +73,7 @@ def run_case(c, cells, ppc, work, scene=None, numerics=None, tag="", end_time=No
     if end_time is not None:
         set_entry(os.path.join(d, "system", "controlDict"), "endTime", "%g" % end_time)
     print("case %2d H0/%d %dx%d: %s/log.slideMPM" % (c, cells, ppc, ppc, d), flush=True)
-    if run(d, which("slideMPM"), "-case", ".", check=False) != 0:
+    if run(d, which("slideMPM"), "-case", ".", log="log.slideMPM", check=False) != 0:
         return {"case": c, "cells": cells, "ppc": ppc, "failed": open(os.path.join(d, "log.slideMPM")).read()[-800:],
                 "stressRate": (numerics or {}).get("stressRate", "kirchhoff")}
     res = case_result(c, cells, ppc, d)
