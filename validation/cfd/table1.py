@@ -54,7 +54,8 @@ def counting(r):
 def case_name(c, cells, mesh):
     """The work directory's name of a run: caseNN_H0_n with what the row's key adds (--continue reads it back)."""
     return ("case%02d_H0_%d" % (c, cells) + "".join(suffix for key, suffix, _, _ in SWITCHES if mesh.get(key))
-            + ("_dt%g" % mesh["max_delta_t"] if mesh.get("max_delta_t") else ""))
+            + ("_dt%g" % mesh["max_delta_t"] if mesh.get("max_delta_t") else "")
+            + ("_co%g" % mesh["max_co"] if mesh.get("max_co") else ""))
 
 
 # Mesh and run options passed to cfdDict as numbers: (option and row key, cfdDict entry, help).
@@ -153,7 +154,7 @@ def case_row(c, cells, d, dam_runout, mesh):
 def row_key(r):
     # The base's cells too: Case 3 ran at H0/40 with H0/40 and with H0/80 on the base.
     return ((r["case"], r["cells"], base_cells(r)) + tuple(bool(r.get(key)) for key, _, _, _ in SWITCHES)
-            + (r.get("max_delta_t") or 0.0,))
+            + (r.get("max_delta_t") or 0.0, r.get("max_co") or 0.0))
 
 
 def scene_dam_runout(c):
@@ -172,14 +173,15 @@ def continue_case(d, end_time, processors, rows, ambient_relaxation=None):
     carried on to a longer mesh by bin/tools/extendSlideMesh (named as the case it came from). ambient_relaxation:
     the light ambient relaxes to rest on this time scale [s] from the leg's start on (cfdDict ambientRelaxationTime
     and the constant/fvOptions slideFoamCase writes for it)."""
-    m = re.match(r"case(\d+)_H0_(\d+)%s(?:_dt([0-9.e+-]+))?$" % "".join("(%s)?" % suffix for _, suffix, _, _ in SWITCHES),
+    m = re.match(r"case(\d+)_H0_(\d+)%s(?:_dt([0-9.e+-]+))?(?:_co([0-9.e+-]+))?$" % "".join("(%s)?" % suffix for _, suffix, _, _ in SWITCHES),
                  os.path.basename(os.path.normpath(d)))
     if not m:
         raise SystemExit("--continue: %s is not a case directory of table1.py (caseNN_H0_n)" % d)
     key = row_key(dict({"case": int(m.group(1)), "cells": int(m.group(2)),
                         "refinement": int(get_entry(os.path.join(d, "system", "cfdDict"), "baseRefinement") or 1)},
                        **{key: bool(m.group(3 + i)) for i, (key, _, _, _) in enumerate(SWITCHES)},
-                       max_delta_t=float(m.group(3 + len(SWITCHES))) if m.group(3 + len(SWITCHES)) else None))
+                       max_delta_t=float(m.group(3 + len(SWITCHES))) if m.group(3 + len(SWITCHES)) else None,
+                       max_co=float(m.group(4 + len(SWITCHES))) if m.group(4 + len(SWITCHES)) else None))
     old = [r for r in rows if row_key(r) == key and "failed" not in r]
     if not old:
         raise SystemExit("--continue: table1.json has no run of Case %d at H0/%d to continue" % key[:2])
