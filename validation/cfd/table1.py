@@ -7,7 +7,8 @@ against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
                                  [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
-                                 [--max-co 0.25] [--xi-per-cell] [--rate-free] [--wall-function] [--top slip]
+                                 [--max-co 0.25] [--max-delta-t 0.01] [--outer-correctors] [--xi-per-cell]
+                                 [--rate-free] [--wall-function] [--top slip]
                                  [--reach 1600] [--end-time 100]
                                  [--replot] [--continue CASE_DIR --end-time 200]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
