@@ -33,10 +33,11 @@ lane() {
         rm -f "$copy/validation/mpm/table1.json"
         python3 "$copy/validation/mpm/table1.py" --cases "$c" --cells "$cells" --ppc 4 \
             ${end:+--end-time "$end"} > "$out/${c}_$cells.log" 2>&1
+        rc=$?
         # A run stopped at the limit is no result: its FAILED row goes (its log stays).
         [ -f "$work/stop" ] && grep -Eq "^case +$c H0/$cells: FAILED" "$out/${c}_$cells.log" \
             && rm -f "$copy/validation/mpm/table1.json" && echo "(stopped at the limit)" >> "$out/${c}_$cells.log"
-        echo "lane: case $c H0/$cells ended ($?) at $SECONDS s: $(grep -E "^case +$c H0/$cells:" "$out/${c}_$cells.log")"
+        echo "lane: case $c H0/$cells: table1.py exit $rc at $SECONDS s: $(grep -E "^case +$c H0/$cells:" "$out/${c}_$cells.log")"
     done
 }
 
