@@ -29,6 +29,16 @@ def paper_table():
             for c in range(1, 14)}
 
 
+
+def base_interface(case):
+    """The base's interface of a Table 1 case's scene (noSlip, frictional, hydroplaning)."""
+    import re
+    path = os.path.join(TOP, "tutorials", "table1", "case%02d" % case, "constant", "sceneProperties")
+    m = re.search(r"^\s*interface\s+(\w+)\s*;", open(path).read(), re.M)
+    if not m:
+        raise SystemExit("%s: no base interface" % path)
+    return m.group(1)
+
 # Not the paper's: Case 1 without Eq. (1)'s rate term, a diagnostic of how a method's runout depends on its cells
 # (validation/mpm/numerics.py, validation/cfd/table1.py --rate-free). In a shear layer a cell or two thick the strain
 # rate, and with it the rate term's strength, grows as the cell shrinks: a runout that falls with the cell with the
