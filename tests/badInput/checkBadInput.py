@@ -88,8 +88,12 @@ def check(bindir, work, bases, entry, app):
                    "runout.dat": "# time [s]  front [m]  rear [m]  frontVelocity [m/s]\n0 0 0 0\n1 1.5 0 0\n"}
         for name, before in planted.items():
             open(os.path.join(out, name), "w").write(before)
-    src = os.path.join(here, entry, e["file"])
-    shutil.copyfile(src, os.path.join(case, e["file"]))
+    # The defective file, and the scene around it where the defect is one only in some scenes (makeCorpus's also).
+    for root, _, files in os.walk(os.path.join(here, entry)):
+        for name in files:
+            rel = os.path.relpath(os.path.join(root, name), os.path.join(here, entry))
+            if rel != "expected":
+                shutil.copyfile(os.path.join(root, name), os.path.join(case, rel))
     if app == "slideFoamCase":
         for p in CFD_OUTPUTS:
             assert not os.path.exists(os.path.join(case, p)), p
@@ -128,7 +132,7 @@ def main():
         if a not in ALL:
             sys.exit("unknown application %s (one of %s)" % (a, ", ".join(ALL)))
     os.makedirs(work, exist_ok=True)
-    entries = sorted(d for d in os.listdir(here) if re.match(r"\d\d-", d) and (not pick or pick.search(d)))
+    entries = sorted(d for d in os.listdir(here) if re.match(r"\d{2,}-", d) and (not pick or pick.search(d)))
     if len(entries) < 1:
         sys.exit("FAIL: no corpus entries")
     bases = prepare_bases(bindir, work, apps)

@@ -100,8 +100,11 @@ def with_interface(lines, iface_lines):
 corpus = []
 
 
-def add(name, why, file, lines, line, key, methods="all"):
-    corpus.append(dict(name=name, why=why, file=file, text="\n".join(lines), line=line, key=key, methods=methods))
+def add(name, why, file, lines, line, key, methods="all", also=None):
+    """also: {file: lines} of the scene the defect needs around it, written beside the defective file (a setting that
+    is wrong only for some scenes); the error must still name the defective file."""
+    corpus.append(dict(name=name, why=why, file=file, text="\n".join(lines), line=line, key=key, methods=methods,
+                       also={f: "\n".join(ls) for f, ls in (also or {}).items()}))
 
 
 def scene_sub(name, why, pattern, new, key, base=None):
@@ -321,11 +324,19 @@ add("cfd-outer-correctors-zero", "no outer corrector a step (PIMPLE needs at lea
 add("cfd-face-force-one-outer", "gravity's along-slope part as a face force with one outer corrector (the SIMPLEC step "
     "takes it with a momentum error)", "system/cfdDict", cfd0[:-1] + ["alongSlopeGravity faceForce;", ""], len(cfd0),
     "alongSlopeGravity", "slideFoamCase")
+add("cfd-wall-function-frictional", "Eq. (1)'s wall function asked over a frictional base (it acts on a no-slip "
+    "base only, and would leave the run as if never asked)", "system/cfdDict", cfd0[:-1] + ["rateWallFunction yes;", ""],
+    len(cfd0), "rateWallFunction", "slideFoamCase",
+    also={SCENE: replace(scene0, r"^\s*interface\s",
+                         entry_value("interface", "frictional") + "\n" + entry_value("s_b", "20"))[0]})
+add("cfd-wall-function-rate-free", "Eq. (1)'s wall function asked of a slide without a rate term (eta 0)",
+    "system/cfdDict", cfd0[:-1] + ["rateWallFunction yes;", ""], len(cfd0), "rateWallFunction", "slideFoamCase",
+    also={SCENE: replace(scene0, r"^\s*eta\s", entry_value("eta", "0"))[0]})
 
 
 def main():
     for d in os.listdir(here):
-        if os.path.isdir(os.path.join(here, d)) and re.match(r"\d\d-", d):
+        if os.path.isdir(os.path.join(here, d)) and re.match(r"\d{2,}-", d):
             shutil.rmtree(os.path.join(here, d))
     names = set()
     for k, e in enumerate(corpus, 1):
@@ -335,6 +346,10 @@ def main():
         os.makedirs(os.path.join(d, os.path.dirname(e["file"])))
         with open(os.path.join(d, e["file"]), "w", encoding="utf-8") as f:
             f.write(e["text"])
+        for rel, text in e["also"].items():
+            os.makedirs(os.path.join(d, os.path.dirname(rel)), exist_ok=True)
+            with open(os.path.join(d, rel), "w", encoding="utf-8") as f:
+                f.write(text)
         with open(os.path.join(d, "expected"), "w") as f:
             f.write("file    %s\nline    %d\nkey     %s\nmethods %s\nwhy     %s\n"
                     % (e["file"], e["line"], e["key"], e["methods"], e["why"]))

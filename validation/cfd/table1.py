@@ -32,7 +32,7 @@ from slidefoam_io import base_cells, read_summary, read_runout, unresolved  # no
 
 def fatal_error(log):
     """The first FOAM FATAL ERROR's message in a solver log (one line; its rank prefix dropped), or None."""
-    m = re.search(r"FOAM FATAL ERROR:\s*\n(?:\[\d+\] )?(.+)", log)
+    m = re.search(r"FOAM FATAL (?:IO )?ERROR:\s*\n(?:\[\d+\] )?(.+)", log)
     return m.group(1).strip() if m else None
 
 

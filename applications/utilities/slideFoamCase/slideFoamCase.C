@@ -154,6 +154,18 @@ int main(int argc, char** argv)
             cfdDict.fail("ambientRelaxationTime", "damps a light ambient only; this scene's ambient is water, "
                          "whose drag and added mass act on the slide (constant/sceneProperties ambient)");
         }
+        // The wall function is Eq. (1)'s rate profile through a no-slip wall cell: refused where it could not act,
+        // since the solver would otherwise run the case as if it had never been asked for.
+        if (c.rateWallFunction && !(sc.rheology.eta > 0.0))
+        {
+            cfdDict.fail("rateWallFunction", "follows Eq. (1)'s rate term through the base's cell; this scene's slide "
+                         "has none (eta 0, constant/sceneProperties rheology)");
+        }
+        if (c.rateWallFunction && sc.interface.type != scene::Interface::Type::noSlip)
+        {
+            cfdDict.fail("rateWallFunction", "acts on a no-slip base; this scene's base is "
+                         + sc.interface.typeName() + " (constant/sceneProperties base interface)");
+        }
         if (c.alongSlopeGravity == "faceForce" && !sc.base.isPlanar())
         {
             cfdDict.fail("alongSlopeGravity", "faceForce splits gravity in the slope's frame, which a planar base has;"
