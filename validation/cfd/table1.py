@@ -25,7 +25,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
-from paper import CASE1_RATE_FREE_SCENE, base_interface, paper_table  # noqa: E402
+from paper import CASE1_RATE_FREE_SCENE, paper_table, wall_function_acts  # noqa: E402
 from runner import run_method, which  # noqa: E402
 from slidefoam_io import base_cells, read_summary, read_runout, unresolved  # noqa: E402
 
@@ -296,9 +296,7 @@ def main():
         raise SystemExit("table1.py: --rate-free is Case 1's strength without the rate term: --cases 1 only")
     if args.wall_function:
         # slideFoamCase refuses it there; said before any case runs, so that no failed row is stored for it.
-        scene = lambda c: os.path.join(top, "tutorials", "table1", "case%02d" % c, "constant", "sceneProperties")
-        refused = [c for c in cases if args.rate_free or not (get_entry(scene(c), "eta") or 0.0) > 0.0
-                   or base_interface(c) != "noSlip"]
+        refused = [c for c in cases if args.rate_free or not wall_function_acts(c)]
         if refused:
             raise SystemExit("table1.py: --wall-function acts on a no-slip base under Eq. (1)'s rate term; Cases %s "
                              "have no rate term or another base" % ", ".join(map(str, refused)))

@@ -30,14 +30,20 @@ def paper_table():
 
 
 
-def base_interface(case):
-    """The base's interface of a Table 1 case's scene (noSlip, frictional, hydroplaning)."""
+def scene_word(case, key):
+    """A Table 1 case scene's entry `key value;` (the first), as written."""
     import re
     path = os.path.join(TOP, "tutorials", "table1", "case%02d" % case, "constant", "sceneProperties")
-    m = re.search(r"^\s*interface\s+(\w+)\s*;", open(path).read(), re.M)
+    m = re.search(r"^\s*%s\s+([^;\s]+)\s*;" % re.escape(key), open(path).read(), re.M)
     if not m:
-        raise SystemExit("%s: no base interface" % path)
+        raise SystemExit("%s: no %s" % (path, key))
     return m.group(1)
+
+
+def wall_function_acts(case):
+    """Whether slideFoam's rateWallFunction can act on a Table 1 case: a no-slip base under Eq. (1)'s rate term
+    (slideFoamCase refuses it elsewhere)."""
+    return scene_word(case, "interface") == "noSlip" and float(scene_word(case, "eta")) > 0.0
 
 # Not the paper's: Case 1 without Eq. (1)'s rate term, a diagnostic of how a method's runout depends on its cells
 # (validation/mpm/numerics.py, validation/cfd/table1.py --rate-free). In a shear layer a cell or two thick the strain
