@@ -27,10 +27,16 @@ def set_entry(path, key, value, add=False):
     open(path, "w").write(new)
 
 
+def get_word(path, key):
+    """The value of the first `key value;` of an OpenFOAM-style dictionary, as written, or None where it has none."""
+    m = re.search(r"^\s*%s\s+([^;\s]+)\s*;" % re.escape(key), open(path).read(), re.M)
+    return m.group(1) if m else None
+
+
 def get_entry(path, key):
     """A top-level number `key value;` of an OpenFOAM-style dictionary, or None where it has none."""
-    m = re.search(r"^\s*%s\s+([^;\s]+)\s*;" % re.escape(key), open(path).read(), re.M)
-    return float(m.group(1)) if m else None
+    word = get_word(path, key)
+    return float(word) if word is not None else None
 
 
 def set_method_entries(case, method_dict, entries):

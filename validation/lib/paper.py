@@ -2,6 +2,8 @@
 (tutorials/table1/generateCases.py) wrote from ../shared/reference/table1.csv."""
 import os
 
+from cfdcase import get_word
+
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
@@ -32,12 +34,11 @@ def paper_table():
 
 def scene_word(case, key):
     """A Table 1 case scene's entry `key value;` (the first), as written."""
-    import re
     path = os.path.join(TOP, "tutorials", "table1", "case%02d" % case, "constant", "sceneProperties")
-    m = re.search(r"^\s*%s\s+([^;\s]+)\s*;" % re.escape(key), open(path).read(), re.M)
-    if not m:
+    word = get_word(path, key)
+    if word is None:
         raise SystemExit("%s: no %s" % (path, key))
-    return m.group(1)
+    return word
 
 
 def wall_function_acts(case):
