@@ -14,8 +14,6 @@ namespace mpm
 namespace
 {
 
-using Policy = Kokkos::RangePolicy<ExecutionSpace>;
-
 // The rear wall (normal to the frame's x axis) holds material back and lets it
 // go: grid column i's nodes in rows [ja, jb) lose any upslope velocity.
 KOKKOS_INLINE_FUNCTION void holdAtRearWall(const NodeField& vel, const int i, const int ja, const int jb)

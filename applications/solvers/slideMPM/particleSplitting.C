@@ -11,7 +11,6 @@ namespace mpm
 namespace splitting
 {
 
-using Policy = Kokkos::RangePolicy<ExecutionSpace>;
 using Offsets = Kokkos::View<int*, MemorySpace>;
 
 // What to do with each particle: -1 keep, 0 split along x, 1 split along y.

@@ -12,13 +12,6 @@ namespace slide
 namespace mpm
 {
 
-namespace
-{
-
-using Policy = Kokkos::RangePolicy<ExecutionSpace>;
-
-} // namespace
-
 void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, const double dt, const bool record) const
 {
     const UndrainedClay clay = clay_;

@@ -17,8 +17,6 @@ namespace mpm
 namespace
 {
 
-using Policy = Kokkos::RangePolicy<ExecutionSpace>;
-
 // Particle-to-grid transfer: mass, momentum (the particle's velocity field at
 // the node, gravity's impulse and the internal force's) and volume.
 // What both transfers read: the particles' fields, the grid's place, the step
