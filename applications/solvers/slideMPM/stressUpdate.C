@@ -28,6 +28,7 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
     const auto len = mp.size;
     const bool average = controls_.volumetricLocking == MpmControls::VolumetricLocking::cellAveraging;
     const bool lagged = clay.plasticRate && clay.previousStepRate;   // the next step reads this step's rate
+    const bool warmStart = clay.returnIterates();   // the next step's return starts from this step's s_u
     const auto avg = grid.averaging;
     const auto m = mp.mass;
     const double invDensity = 1.0/density_;
@@ -63,15 +64,14 @@ void TimeIntegrator::updateStress(MaterialPoints& mp, BackgroundGrid& grid, cons
         // V0 from the mass: a particle is seeded at the slide's density, and splitting halves m and V together.
         const double invVn1 = 1.0/Vn1;
         const double dXi = clay.update(Lp, dil, dt, s, xip, sup, gdot, record, lagged ? plasticRate(p) : 0.0,
-                                       Vn*invVn1, m(p)*invDensity*invVn1);
+                                       Vn*invVn1, m(p)*invDensity*invVn1, warmStart ? su(p) : 0.0);
         for (int c = 0; c < 4; ++c) sig(p, c) = s[c];
         xi(p) = xip;
         if (dXi > 0.0) work(p) += sup*dXi*Vn;   // the return's dissipation, s:dEps_p = s_u dXi
-        if (record)   // three stores a step fewer: 7 % of the memory traffic
-        {
-            su(p) = sup;
-            rate(p) = gdot;
-        }
+        // Stored only by steps whose end is written (7 % of the memory traffic),
+        // but s_u every step where the next step's return starts from it.
+        if (record || warmStart) su(p) = sup;
+        if (record) rate(p) = gdot;
         if (record || lagged) plasticRate(p) = dXi/dt;
         V(p) = Vn1;
         len(p, 0) = std::fmin(maxLength, len(p, 0)*UndrainedClay::stretchFactor(Lp[0]*dt));   // fmin: std::min is host-only under nvcc

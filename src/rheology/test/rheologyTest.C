@@ -379,6 +379,39 @@ TEST(ReturnStrength, MeetsEq1AtThePlasticRate)
 }
 
 
+TEST(ReturnStrength, WarmStartFindsTheSameRoot)
+{
+    // A material point's return started from the strength of its step before
+    // (slideMPM keeps it) lands on the cold start's root from any previous
+    // strength: the root itself, one near it, far below or above it, at the
+    // threshold (an elastic step before: the cold start), and from a strength
+    // whose remoulding has moved on (xi grew since).
+    const double G = 100.0*500.0/2.98;
+    for (const double dt : {1e-5, 1e-3})
+    for (const double n : {0.15, 0.23, 0.5, 1.5})
+    for (const double xi : {0.0, 4.0})
+    for (const double excess : {1e-9, 1e-6, 0.01, 0.5, 3.0, 100.0})
+    {
+        HerschelBulkleyRemoulding m = case10();
+        m.n = n;
+        const double R = m.thresholdStrength(xi);
+        const double tau = R*(1.0 + excess);
+        double xCold = 0.0;
+        const double cold = m.returnStrengthFromThreshold(tau, R, G, dt, xCold);
+        for (const double previous : {cold, cold*(1.0 + 1e-6), R + 0.5*(cold - R), R + 1e-3*(cold - R),
+                                      R + 10.0*(cold - R), R, 0.0, m.thresholdStrength(0.0)*1.5})
+        {
+            double x = -1.0;
+            const double s = m.returnStrengthFromThreshold(tau, R, G, dt, x, previous);
+            EXPECT_NEAR(s, cold, 1e-12*tau)
+                << "dt " << dt << " n " << n << " xi " << xi << " excess " << excess << " previous " << previous;
+            EXPECT_NEAR(x, xCold, 1e-12*tau/G);
+            EXPECT_NEAR(tau - G*x, s, 1e-12*tau);
+        }
+    }
+}
+
+
 // Eq. (1)'s flow next to a wall (wallLayer.H) on Table 1 Case 1's material:
 // the closed-form speed against a quadrature of the capped model's rate, the
 // whole steady layer against its exact plug speed, and the inverse.
