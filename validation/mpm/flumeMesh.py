@@ -14,7 +14,6 @@ Usage: validation/mpm/flumeMesh.py [--settings 30x4,60x4,120x4] [--work DIR]
 (after ./Allwmake; on 2 cores H0/60 takes about 8 minutes, H0/120 about 65)"""
 import argparse
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -25,6 +24,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
+from cfdcase import make_case, set_entry, set_method_entries  # noqa: E402
 from slidefoam_io import read_summary, particles_on_planar_base  # noqa: E402
 from runner import slidefoam_env, which  # noqa: E402
 
@@ -33,15 +33,6 @@ GATE = 1.8          # the front starts at the gate, 1.8 m from the end wall
 H0 = 0.3            # the slurry's initial height [m]
 ANGLE = 3.43        # the flume's slope [deg]
 PROFILE_TIME = 4.1  # the paper's profile time [s]
-
-
-def set_entries(path, entries):
-    text = open(path).read()
-    for key, value in entries.items():
-        text, n = re.subn(r"^%s\s+[^;]*;" % key, "%s %s;" % (key, value), text, flags=re.M)
-        if n == 0:
-            text += "%s %s;\n" % (key, value)
-    open(path, "w").write(text)
 
 
 def slide_mpm(case, threads):
@@ -64,18 +55,16 @@ def run(work, cells, ppc, threads):
     if not os.path.exists(kept):
         done = os.path.join(out, "summary.json")
         if not (os.path.exists(done) and abs(read_summary(done)["end_time_s"] - PROFILE_TIME) < 1e-6):
-            shutil.rmtree(d, ignore_errors=True)
-            shutil.copytree(FLUME, d, ignore=shutil.ignore_patterns("postProcessing", "log.*"))
-            with open(os.path.join(d, "system", "mpmDict"), "w") as f:
-                f.write("setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\nwriteFields no;\n"
-                        "progressInterval 60;\npurgeState 2;\n" % (cells, ppc))
-            set_entries(ctl, {"endTime": PROFILE_TIME})
+            make_case(FLUME, work, os.path.basename(d), control={"endTime": PROFILE_TIME},
+                      dicts={"system/mpmDict": "setting fast;\ncellsPerHeight %d;\nparticlesPerCell %d;\n"
+                             "writeFields no;\nprogressInterval 60;\npurgeState 2;\n" % (cells, ppc)})
             slide_mpm(d, threads)
         shutil.copy(done, kept)
     if not os.path.exists(os.path.join(out, "particles.pvd")):
         # The last 0.1 s again from the state at 4.0 s, now writing the particles.
-        set_entries(ctl, {"startFrom": "startTime", "startTime": PROFILE_TIME - 0.1})
-        set_entries(os.path.join(d, "system", "mpmDict"), {"writeFields": "yes"})
+        set_entry(ctl, "startFrom", "startTime")
+        set_entry(ctl, "startTime", "%g" % (PROFILE_TIME - 0.1))
+        set_method_entries(d, "mpmDict", {"writeFields": "yes"})
         slide_mpm(d, threads)
     s = read_summary(kept)
     if abs(s["end_time_s"] - PROFILE_TIME) > 1e-6:
