@@ -61,3 +61,19 @@ def capped_profile(h, rho_ambient, mu_max, material=None, points=200001):
     rate = np.where(tau <= mu_max*g_c, tau/mu_max, gdot_ref*(x/eta)**(1.0/n))
     u = np.concatenate(([0.0], np.cumsum(0.5*(rate[1:] + rate[:-1])*np.diff(z))))
     return lambda zz: np.interp(zz, z, u)
+
+
+def rest_depth(rest_velocity, material=None):
+    """The depth of the steady layer whose plug moves at rest_velocity. Eq. (1)'s rate term vanishes only with the
+    rate, so a long deposit thicker than its yield depth creeps on and thins until its plug is about this slow: where
+    a method's rest test (everything slower than restVelocity) stops it. Bisection on exact()'s plug speed, which
+    grows with the depth from zero at the yield depth."""
+    mat = dict(CASE1, **(material or {}))
+    lo = mat["s_uo"]/(RHO*G*S)
+    hi = 2.0*lo
+    while exact(hi, material=mat)["plug"] < rest_velocity:
+        lo, hi = hi, 2.0*hi
+    for _ in range(100):
+        mid = 0.5*(lo + hi)
+        lo, hi = (mid, hi) if exact(mid, material=mat)["plug"] < rest_velocity else (lo, mid)
+    return 0.5*(lo + hi)
