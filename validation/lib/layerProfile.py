@@ -29,7 +29,7 @@ def exact(h, rho_ambient=0.0, material=None, surface_slope=0.0):
     if xb <= 0.0:
         raise ValueError("a layer %g m deep is held by s_uo (depth at yield %g m)" % (h, s_uo/w))
     m = (n + 1.0)/n
-    a = gdot_ref*s_uo/w*eta**(-1.0/n)*n/(n + 1.0)
+    a = plug_coefficient(mat, w)
     zy = h - s_uo/w
 
     def u(z):
@@ -63,17 +63,19 @@ def capped_profile(h, rho_ambient, mu_max, material=None, points=200001):
     return lambda zz: np.interp(zz, z, u)
 
 
+
+def plug_coefficient(material, w):
+    """a of the steady layer's plug speed a x_b^((n + 1)/n), x_b = w h/s_uo - 1 (w: the weight along the base per
+    unit volume): the same for every depth."""
+    s_uo, eta, n, gdot_ref = material["s_uo"], material["eta"], material["n"], material["gdotRef"]
+    return gdot_ref*s_uo/w*eta**(-1.0/n)*n/(n + 1.0)
+
+
 def rest_depth(rest_velocity, material=None):
-    """The depth of the steady layer whose plug moves at rest_velocity. Eq. (1)'s rate term vanishes only with the
-    rate, so a long deposit thicker than its yield depth creeps on and thins until its plug is about this slow: where
-    a method's rest test (everything slower than restVelocity) stops it. Bisection on exact()'s plug speed, which
-    grows with the depth from zero at the yield depth."""
+    """The depth of the steady layer whose plug moves at rest_velocity (exact()'s plug speed inverted). Eq. (1)'s
+    rate term vanishes only with the rate, so a long deposit thicker than its yield depth creeps on and thins until
+    its plug is about this slow: where a method's rest test (everything slower than restVelocity) stops it."""
     mat = dict(CASE1, **(material or {}))
-    lo = mat["s_uo"]/(RHO*G*S)
-    hi = 2.0*lo
-    while exact(hi, material=mat)["plug"] < rest_velocity:
-        lo, hi = hi, 2.0*hi
-    for _ in range(100):
-        mid = 0.5*(lo + hi)
-        lo, hi = (mid, hi) if exact(mid, material=mat)["plug"] < rest_velocity else (lo, mid)
-    return 0.5*(lo + hi)
+    w = RHO*G*S
+    xb = (rest_velocity/plug_coefficient(mat, w))**(mat["n"]/(mat["n"] + 1.0))
+    return mat["s_uo"]*(1.0 + xb)/w
