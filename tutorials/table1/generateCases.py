@@ -146,6 +146,18 @@ def readme(case, row, paper):
                      "`cellsPerHeight 40; particlesPerCell 2;` in `system/mpmDict` (12 minutes on 2 cores) it parts "
                      "into horsts and grabens by 10 s, as the paper's Fig. 8 shows: `validation/snapshots/snapshots.png`, "
                      "`validation/mpm/shearBand.md`.")
+    if case == 11:
+        lines.append("- The scene ends at 30 s, the paper's snapshot. slideDAM runs the wholly remoulded layer (125 Pa) on to "
+                     "rest by 204 s, 2.3 km out, as far as Case 4 and beyond what slideFoam can follow here.")
+    if case == 12:
+        lines.append("- Runs to rest (200 s at most; the scene ended at 40 s until session 75). Its remoulded strength, "
+                     "250 Pa, holds 0.71 m on this slope, so the front runs out as a thinner sheet. slideDAM stops it at "
+                     "439 m by 65 s. slideFoam at this case's cfdDict stops its front at 389 m, but the sheet's thin tip "
+                     "jitters on to 200 s; with `maxDeltaT 0.01;` in `system/controlDict` it comes to rest at 418 m by "
+                     "78 s. slideMPM at this case's H0/10 stops it at 278 m. Its particles crowd the cell on the base "
+                     "there; with `particleShifting 0.03;` in `system/mpmDict` it runs 381 m (426 m at H0/20). No "
+                     "method's runout of this sheet is converged in its cells: `validation/README.md`, \"Case 12 run "
+                     "to rest\".")
     if case == 3:
         lines.append("- The paper's s_uo for this case is garbled; `table1.csv` reads it as 1 kPa, an inference. At 1 kPa "
                      "the three methods run 21.0-23.6 m and still creep at 100 s (their deposits, 3.5-3.7 m, are thicker "
