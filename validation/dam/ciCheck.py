@@ -3,6 +3,7 @@
 200 columns) on Table 1 cases, checked against the paper where slideDAM meets it
 and against the mechanism the paper reports. Exits non-zero on any miss.
 Usage: ciCheck.py <slideDAM executable> <work dir>"""
+import math
 import os
 import re
 import shutil
@@ -73,6 +74,19 @@ checks.append(ok)
 print("%-58s %10.2f  < 1 %% of the front  %s" % ("Case 10 front's travel from 100 to 400 s [m] (stalled)",
                                                 stalled[1] - stalled[0], "ok" if ok else "MISS"))
 check("Case 10 front while stalled, at 400 s [m] (paper DAM 125 m)", stalled[1], 125.0, 0.05)
+# Case 12 has no rate term, so its wholly remoulded clay (s_uo delta_rem = 250 Pa) holds at most
+# h_c = s_uo delta_rem/(rho' g sin(theta)) = 0.71 m on its slope: its front runs out as a thinner sheet and stops
+# where the sheet's momentum is spent (at rest by 66 s, 429.7 m with 200 columns). Having travelled hundreds of
+# metres its columns are remoulded through (xi >> xi95), so none can stand thicker than h_c. slideDAM stops
+# 0.660 m thick (-7 %); without remoulding (delta_rem 1) 1.27 m, which this would catch.
+s, r = run("table1/case12")
+scene = os.path.join(top, "tutorials", "table1", "case12", "constant", "sceneProperties")
+yieldDepth = get_entry(scene, "s_uo")*get_entry(scene, "deltaRem")/(
+    get_entry(scene, "density")*9.81*math.sin(math.radians(get_entry(scene, "angle"))))
+ok = s["at_rest"] and r["maxThickness"][-1] <= 1.02*yieldDepth
+checks.append(ok)
+print("%-58s %10.3f  <= %.3f m (+2 %%), at rest: %s  %s" % ("Case 12 thickest column at rest [m] (remoulded h_c)",
+      r["maxThickness"][-1], yieldDepth, s["at_rest"], "ok" if ok else "MISS"))
 s, r = run("table1/case09")
 # The paper's "up to 12 m/s at 20 s" and "~3 m" are read off its Fig. 8(b)/9: +-15 %.
 check("Case 9 front velocity at 20 s [m/s] (paper ~12 m/s)", r["frontVelocity"][-1], 12.0, 0.15)
