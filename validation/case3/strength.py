@@ -17,7 +17,6 @@ takes longer by as much.
 Usage: validation/case3/strength.py [--strengths 1000,1250,1500,2000] [--processors 1] [--stored]
 (after ./Allwmake; about 10 minutes on 2 cores)"""
 import json
-import math
 import os
 import sys
 import tempfile
@@ -26,6 +25,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case, prepare, run_slidefoam  # noqa: E402
+import layerProfile  # noqa: E402  (Case 3's slope and rho' are its defaults)
 from options import parse  # noqa: E402
 from paper import paper_table  # noqa: E402
 from plotting import pyplot  # noqa: E402
@@ -34,7 +34,6 @@ from slidefoam_io import read_runout, read_summary  # noqa: E402
 
 METHODS = ("slideDAM", "slideMPM", "slideFoam")
 PAPER_KEY = {"slideDAM": "DAM", "slideMPM": "MPM", "slideFoam": "CFD"}
-RHO, G, THETA = 600.0, 9.81, 3.43     # Case 3's rho' [kg/m3], g [m/s2], slope [deg] (tutorials/table1/case03)
 # Each method's Table 1 set-up (validation/dam, mpm and cfd/table1.py).
 SETUP = {"dam": {"setting": "fast", "columns": 800, "writeFields": "no"},
          "mpm": {"setting": "fast", "cellsPerHeight": 10, "particlesPerCell": 4, "writeFields": "no",
@@ -97,7 +96,7 @@ def write(results):
             state = "at rest" if r["at_rest"] else "front %.3f m/s at %g s" % (r["front_velocity"], r["end_time"])
             cells += ["%.1f (%s)" % (r["runout"], state), "%.2f" % r["max_thickness"]]
         # The thickness a layer at rest can keep on the slope: its basal stress rho' g h sin(theta) at s_uo.
-        h_c = s/(RHO*G*math.sin(math.radians(THETA)))
+        h_c = layerProfile.yield_depth(s)
         lines.append("| %.2f | %.2f | %s |" % (s/1000.0, h_c, " | ".join(cells)))
     lines += ["", "s_uo at which each method's runout reaches the paper's (linear between the runs above):", ""]
     for m in METHODS:

@@ -3,7 +3,6 @@
 200 columns) on Table 1 cases, checked against the paper where slideDAM meets it
 and against the mechanism the paper reports. Exits non-zero on any miss.
 Usage: ciCheck.py <slideDAM executable> <work dir>"""
-import math
 import os
 import re
 import shutil
@@ -81,8 +80,9 @@ check("Case 10 front while stalled, at 400 s [m] (paper DAM 125 m)", stalled[1],
 # 0.660 m thick (-7 %); without remoulding (delta_rem 1) 1.27 m, which this would catch.
 s, r = run("table1/case12")
 scene = os.path.join(top, "tutorials", "table1", "case12", "constant", "sceneProperties")
-yieldDepth = get_entry(scene, "s_uo")*get_entry(scene, "deltaRem")/(
-    get_entry(scene, "density")*9.81*math.sin(math.radians(get_entry(scene, "angle"))))
+if (get_entry(scene, "angle"), get_entry(scene, "density")) != (layerProfile.THETA, layerProfile.RHO):
+    raise SystemExit("ciCheck.py: Case 12's slope or density is not layerProfile's")
+yieldDepth = layerProfile.yield_depth(get_entry(scene, "s_uo")*get_entry(scene, "deltaRem"))
 ok = s["at_rest"] and r["maxThickness"][-1] <= 1.02*yieldDepth
 checks.append(ok)
 print("%-58s %10.3f  <= %.3f m (+2 %%), at rest: %s  %s" % ("Case 12 thickest column at rest [m] (remoulded h_c)",

@@ -15,6 +15,11 @@ S = math.sin(math.radians(THETA))
 CASE1 = {"s_uo": S_UO, "eta": ETA, "n": N_HB, "gdotRef": GDOT_REF}
 
 
+def yield_depth(strength):
+    """The thickest layer a rate-free strength holds at rest on the slope: s/(rho' g sin(theta)) [m]."""
+    return strength/(RHO*G*S)
+
+
 def exact(h, rho_ambient=0.0, material=None, surface_slope=0.0):
     """Yield height, plug speed, basal rate and decay length of the steady layer of depth h, and its profile, for
     Eq. (1) without remoulding (`material`: s_uo, eta, n, gdotRef; Case 1's by default; n = 1 is Bingham's). The
