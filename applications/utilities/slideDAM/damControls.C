@@ -2,6 +2,7 @@
 
 #include "scene.H"
 
+#include <algorithm>
 #include <sstream>
 
 namespace slide
@@ -40,6 +41,22 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
     }
     if (d.found("courant")) c.courant = d.getScalarInRange("courant", 0.0, 1.0, false, true, "Courant number");
     if (d.found("deltaT")) c.deltaT = d.getScalarInRange("deltaT", 0.0, 1e6, false, true, "fixed time step [s]");
+    // The explicit step amplifies the shortest waves of a thin, fast sheet a little every step, and a
+    // finer column takes more steps at a given Courant number: the product is what must stay bounded.
+    const double safeCourant = courantColumns/c.columns;
+    if (!d.found("courant"))
+    {
+        c.courant = std::min(c.courant, safeCourant);
+    }
+    else if (c.timeStep == TimeStep::adaptive && c.deltaT <= 0.0 && c.courant > safeCourant)
+    {
+        std::ostringstream os;
+        os << "courant " << c.courant << " with " << c.columns << " columns (" << d.file() << " line "
+           << d.lineOf("courant") << ") exceeds " << courantColumns << "/columns = " << safeCourant
+           << ": thin, fast sheets may run short (validation/dam/sheetStability.md); leave courant out for "
+           << safeCourant;
+        c.courantWarning = os.str();
+    }
     if (d.found("frictionalBase"))
     {
         c.frictionalBase = d.getWordOneOf("frictionalBase", {"enhanced", "original"}) == "enhanced"

@@ -48,6 +48,7 @@ int main(int argc, char** argv)
 
         std::cout << sc.describe();
         std::cout << "\nNumerics: " << controls.describe() << "\n" << std::endl;
+        if (!controls.courantWarning.empty()) std::cout << "Warning: " << controls.courantWarning << "\n" << std::endl;
         const dam::Applicability applicability = dam::checkApplicability(sc, dam::defaultApplicabilityMap());
         if (applicability.verdict == "outside")
         {

@@ -246,6 +246,25 @@ TEST(SlideDAM, PaperTimeStep)
 }
 
 
+// Courant x columns is bounded where the Courant number is left to the setting, and said where a
+// given one exceeds the bound (validation/dam/sheetStability.md: beyond it thin sheets ran 5-10 % short).
+TEST(SlideDAM, CourantNumberShrinksWithTheColumns)
+{
+    using scene::Dictionary;
+    auto read = [](const std::string& text) { return dam::DamControls::read(Dictionary::parse(text, "system/damDict")); };
+    const double bound = dam::DamControls::courantColumns;
+    EXPECT_DOUBLE_EQ(read("setting fast;\ncolumns 800;\n").courant, 0.5);
+    EXPECT_DOUBLE_EQ(read("setting fast;\ncolumns 6400;\n").courant, bound/6400);
+    EXPECT_TRUE(read("setting fast;\ncolumns 6400;\n").courantWarning.empty());
+    const dam::DamControls given = read("setting fast;\ncolumns 6400;\ncourant 0.5;\n");
+    EXPECT_DOUBLE_EQ(given.courant, 0.5);
+    EXPECT_NE(given.courantWarning.find("system/damDict line 3"), std::string::npos) << given.courantWarning;
+    EXPECT_TRUE(read("setting fast;\ncolumns 6400;\ncourant 0.2;\n").courantWarning.empty());
+    // The paper's step and a fixed step do not use the Courant number.
+    EXPECT_TRUE(read("setting fast;\ncolumns 6400;\ncourant 0.5;\ntimeStep paper;\n").courantWarning.empty());
+    EXPECT_TRUE(read("setting fast;\ncolumns 6400;\ncourant 0.5;\ndeltaT 1e-4;\n").courantWarning.empty());
+}
+
 TEST(SlideDAM, KroneWrightFlumeAgainstLubricationTheory)
 {
     // Run 15: L0 1.8 m, H0 0.3 m behind a wall, 3.43 deg, rho 1073, Bingham s_uo 42.5 Pa,
