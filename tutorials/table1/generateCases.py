@@ -152,12 +152,13 @@ def readme(case, row, paper):
     if case == 12:
         lines.append("- Runs to rest (200 s at most; the scene ended at 40 s until session 75). Its remoulded strength, "
                      "250 Pa, holds 0.71 m on this slope, so the front runs out as a thinner sheet. slideDAM stops it at "
-                     "439 m by 65 s. slideFoam at this case's cfdDict stops its front at 389 m, but the sheet's thin tip "
+                     "439 m by 65 s, and at 428 m with its step converged (`columns 3200; courant 0.125;` in "
+                     "`system/damDict`: `validation/dam/sheetStability.md`). slideFoam at this case's cfdDict stops its front at 389 m, but the sheet's thin tip "
                      "jitters on to 200 s; with `maxDeltaT 0.01;` in `system/controlDict` it comes to rest at 418 m by "
                      "78 s. slideMPM at this case's H0/10 stops it at 278 m. Its particles crowd the cell on the base "
-                     "there; with `particleShifting 0.03;` in `system/mpmDict` it runs 381 m (426 m at H0/20). No "
-                     "method's runout of this sheet is converged in its cells: `validation/README.md`, \"Case 12 run "
-                     "to rest\".")
+                     "there; with `particleShifting 0.03;` in `system/mpmDict` it runs 381 m (426 m at H0/20). The "
+                     "CFD's and the MPM's runouts of this sheet are not converged in their cells: `validation/README.md`, "
+                     "\"Case 12 run to rest\".")
     if case == 3:
         lines.append("- The paper's s_uo for this case is garbled; `table1.csv` reads it as 1 kPa, an inference. At 1 kPa "
                      "the three methods run 21.0-23.6 m and still creep at 100 s (their deposits, 3.5-3.7 m, are thicker "
