@@ -7,10 +7,11 @@ Case 12 has no rate term. Its wholly remoulded clay (s_uo delta_rem = 250 Pa) ho
 its front runs out as a thinner sheet and stops where the sheet's momentum is spent; Case 1's weak clay runs out as a
 sheet too. Until session 76 slideDAM's Case 12 fell from 439 to 406 m between 800 and 6400 columns at the fast
 setting's Courant number 0.5. Two mechanisms can make a sheet's runout depend on the columns:
-- the explicit step: the plug's advection and the momentum-flux bracket of Eqs. (2)-(3) are central differences
-  stepped by forward Euler, which amplifies the shortest waves by a factor of about 1 + nu^2/2 every step (nu the
-  step's Courant number on those terms); a finer column at a fixed Courant number takes more steps, so the growth
-  goes as courant x columns, and a smaller Courant number removes it;
+- the explicit step: the momentum-flux bracket of Eq. (3), its column value taken at the mean of its two nodes'
+  velocities, is a central difference stepped by forward Euler, which amplifies the shortest waves by a factor of
+  about 1 + nu^2/2 every step (nu the step's Courant number on that term); a finer column at a fixed Courant number
+  takes more steps, so the growth goes as courant x columns, and a smaller Courant number removes it (a build
+  without the bracket did not depend on the step: README, "Thin, fast sheets and the explicit step");
 - the sheet's own instability: the basal stress of a rate-free clay is s_u whatever the speed, so per unit mass it
   resists a thinner stretch more (s_u/(rho D)). Linearised about a uniform sheet of thickness D with one velocity,
   lambda^2 = -(k^2 c^2 + i k D K), c^2 = g cos(theta) D, K = s_u/(rho D^2), one wave grows, at up to

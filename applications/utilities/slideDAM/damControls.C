@@ -41,8 +41,9 @@ DamControls DamControls::read(const scene::Dictionary& d, const std::string& ove
     }
     if (d.found("courant")) c.courant = d.getScalarInRange("courant", 0.0, 1.0, false, true, "Courant number");
     if (d.found("deltaT")) c.deltaT = d.getScalarInRange("deltaT", 0.0, 1e6, false, true, "fixed time step [s]");
-    // The explicit step amplifies the shortest waves of a thin, fast sheet a little every step, and a
-    // finer column takes more steps at a given Courant number: the product is what must stay bounded.
+    // The explicit step of Eq. (3)'s momentum-flux bracket (a central difference) amplifies the shortest
+    // waves of a thin, fast sheet a little every step, and a finer column takes more steps at a given
+    // Courant number: the product is what must stay bounded.
     const double safeCourant = courantColumns/c.columns;
     if (!d.found("courant"))
     {
