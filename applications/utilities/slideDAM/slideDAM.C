@@ -138,7 +138,7 @@ int main(int argc, char** argv)
             }
             const output::WriteSchedule::Step s = schedule.clip(t, dtStable);
             speedBeforeStep = speed;
-            integrator.step(slide, s.dt, t);
+            integrator.advance(slide, s.dt, t);
             speed = dam::DamIntegrator::maxSpeed(slide);
             ++step;
             t = s.time;
