@@ -332,6 +332,8 @@ add("cfd-wall-function-frictional", "Eq. (1)'s wall function asked over a fricti
 add("cfd-wall-function-rate-free", "Eq. (1)'s wall function asked of a slide without a rate term (eta 0)",
     "system/cfdDict", cfd0[:-1] + ["rateWallFunction yes;", ""], len(cfd0), "rateWallFunction", "slideFoamCase",
     also={SCENE: replace(scene0, r"^\s*eta\s", entry_value("eta", "0"))[0]})
+add("dam-timeScheme-unknown", "a time scheme slideDAM does not have (rk4)", "system/damDict",
+    dam0[:-1] + ["timeScheme  rk4;", ""], len(dam0), "timeScheme", "slideDAM")
 
 
 def main():
