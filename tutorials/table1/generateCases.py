@@ -180,7 +180,7 @@ def readme(case, row, paper):
                      "at 1887.5 m. The run's rest test still fails on material smeared below alpha 0.5 beyond the "
                      "front (`validation/cfd/README.md`, \"Case 4\"). slideDAM and slideMPM run it to rest.")
     if case == 5:
-        lines.append("- slideFoam on this case (slideDAM's 7.5 km in 353 s) needs a mesh several kilometres long: "
+        lines.append("- slideFoam on this case (slideDAM's 7.5 km, at rest by 418 s) needs a mesh several kilometres long: "
                      "about 4 times Case 4's cells, hours on a few cores. Its first 30 s have been run (42,530 cells, "
                      "508 s on 2 ranks, `top slip;`): the front is at 813 m at 30 s, within 2.7 % of slideMPM's "
                      "foremost particle at 10, 20 and 30 s and 17-20 % behind slideDAM (`validation/cfd/README.md`, "

@@ -16,6 +16,8 @@ namespace dam
 namespace
 {
 
+constexpr double restingPlugSpeed = 1e-12;   // [m/s]
+
 // Velocity after a step under a yield-type resistance of magnitude r*dt:
 // stops exactly when the resistance can absorb the trial velocity.
 inline double project(const double trial, const double resistance)
@@ -284,7 +286,9 @@ void DamIntegrator::step(SlideColumns& s, const double dt, const double time)
             const double dUpdx = (s.Up[jr] - s.Up[jl])/(s.x[jr] - s.x[jl]);
             const double aPlug = aGravity + aPressure - (Up - U)*dUpdx;
             const double aLayer = aGravity + aPressure + aFlux;
-            if (Up == 0.0)
+            // A plug slower than this is at rest: the linearised resistance's Jacobian grows as 1/|U_p|, and at
+            // a few 1e-224 m/s it froze a node that 70 m/s2 pushed (Table 1 Case 4, validation/dam/README.md).
+            if (std::fabs(Up) < restingPlugSpeed)
             {
                 // At rest: the plug is the whole column, and it yields only when the
                 // driving stress exceeds the strength; a shear layer then starts thin.

@@ -312,6 +312,26 @@ TEST(SlideDAM, ThirdOrderStepAgreesWithSmallEulerSteps)
 }
 
 
+// A plug moving at a vanishing speed is at rest, and a column pushed past its strength starts from it: the
+// linearised resistance's Jacobian grows as 1/U_p, and at U_p ~ 1e-224 m/s it had frozen a node that 70 m/s2
+// pushed (Table 1 Case 4 with rk3, validation/dam/README.md).
+TEST(SlideDAM, VanishingPlugSpeedIsRestNotAFrozenNode)
+{
+    scene::Scene sc = case2LikeScene();
+    sc.rheology.s_uo = 50.0;    // Case 4's clay: the 5 m slide's weight along the slope far exceeds it
+    dam::DamIntegrator integ(sc, fast(100));
+    dam::SlideColumns s = dam::SlideColumns::fromScene(sc, 100);
+    for (int j = 0; j < s.nNodes(); ++j)
+    {
+        s.Up[j] = 1e-224;
+        s.U[j] = 0.99e-224;
+    }
+    integ.step(s, 1e-3, 0.0);
+    const int mid = s.nNodes()/2;
+    EXPECT_GT(s.Up[mid], 1e-4) << "the node stayed frozen at " << s.Up[mid] << " m/s";
+}
+
+
 TEST(SlideDAM, KroneWrightFlumeAgainstLubricationTheory)
 {
     // Run 15: L0 1.8 m, H0 0.3 m behind a wall, 3.43 deg, rho 1073, Bingham s_uo 42.5 Pa,
