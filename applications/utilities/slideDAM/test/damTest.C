@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 
 using namespace slide;
 
@@ -305,8 +304,6 @@ TEST(SlideDAM, ThirdOrderStepAgreesWithSmallEulerSteps)
     const double rk3 = runout(dam::DamControls::TimeScheme::rk3, 0.5);
     const double euler = runout(dam::DamControls::TimeScheme::euler, 0.125);
     const double eulerLarge = runout(dam::DamControls::TimeScheme::euler, 0.5);
-    std::cout << "Case 1, 200 columns: rk3 at Courant 0.5 " << rk3 << " m, euler at 0.125 " << euler << " m, at 0.5 "
-              << eulerLarge << " m\n";
     EXPECT_NEAR(rk3, euler, 0.005*euler) << "rk3 " << rk3 << " m, euler at 0.125 " << euler << " m";
     EXPECT_GT(std::fabs(eulerLarge - euler), 0.015*euler) << "euler at 0.5 " << eulerLarge << " m";
 }
