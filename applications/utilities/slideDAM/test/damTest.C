@@ -309,6 +309,55 @@ TEST(SlideDAM, ThirdOrderStepAgreesWithSmallEulerSteps)
 }
 
 
+// Where forward Euler and the third-order step part at Courant 0.5 on a face collapse (Table 1 Case 7: a
+// 5 kPa slide on a 5 deg base capped at 6 kPa, here with 200 columns), the step is the cause, not the scheme:
+// the yield-type switches (arrest, the face's gate) are first order in the step for both, and the two approach one
+// runout from either side (validation/dam/timeSchemes.md: 5.68 and 5.01 m at 0.5, 5.41 and 5.38 m at 1/32).
+TEST(SlideDAM, FaceCollapseSchemesApproachOneRunoutAsTheStepShrinks)
+{
+    scene::Interface iface;
+    iface.type = scene::Interface::Type::frictional;
+    iface.s_b = 6000.0;
+    scene::Scene sc = scene::blockScene(5.0, 40.0, 5.0, 600.0, 5000.0, iface);
+    sc.rheology.eta = 0.45;
+    sc.rheology.n = 0.23;
+    sc.rheology.gdotRef = 0.06;
+    auto runout = [&](dam::DamControls::TimeScheme scheme, double courant)
+    {
+        dam::DamControls c = fast(200);
+        c.timeScheme = scheme;
+        c.courant = courant;
+        dam::DamIntegrator integ(sc, c);
+        dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
+        double t = 0.0, speed = HUGE_VAL, previous = HUGE_VAL;
+        while (t < 60.0 && !(t > 1.0 && dam::DamIntegrator::atRest(speed, previous, 0.01)))
+        {
+            previous = speed;
+            const double dt = integ.timeStep(s);
+            integ.advance(s, dt, t);
+            t += dt;
+            speed = dam::DamIntegrator::maxSpeed(s);
+        }
+        EXPECT_LT(t, 60.0) << "not at rest";
+        return s.front();
+    };
+    using Scheme = dam::DamControls::TimeScheme;
+    std::vector<double> euler, rk3;
+    for (double courant : {0.5, 0.125, 0.03125})
+    {
+        euler.push_back(runout(Scheme::euler, courant));
+        rk3.push_back(runout(Scheme::rk3, courant));
+    }
+    for (std::size_t k = 1; k < euler.size(); ++k)
+    {
+        EXPECT_LT(euler[k], euler[k - 1]) << "forward Euler is to fall towards the limit";
+        EXPECT_GT(rk3[k], rk3[k - 1]) << "rk3 is to rise towards the limit";
+    }
+    EXPECT_GT(euler[0] - rk3[0], 0.05*euler.back()) << "at 0.5: euler " << euler[0] << " m, rk3 " << rk3[0] << " m";
+    EXPECT_NEAR(euler.back(), rk3.back(), 0.01*euler.back()) << "at 1/32: euler " << euler.back() << " m, rk3 "
+                                                             << rk3.back() << " m";
+}
+
 // A plug moving at a vanishing speed is at rest, and a column pushed past its strength starts from it: the
 // linearised resistance's Jacobian grows as 1/U_p, and at U_p ~ 1e-224 m/s it had frozen a node that 70 m/s2
 // pushed (Table 1 Case 4 with rk3, validation/dam/README.md).
