@@ -15,7 +15,7 @@ std::vector<double> toDoubles(const std::vector<int>& v)
 }
 }
 
-void writeState(const std::string& caseDir, const RestartPoint& at, const SlideColumns& s)
+void writeState(const std::string& caseDir, const RestartPoint& at, const SlideColumns& s, const FrontSurges& surges)
 {
     output::StateFile f;
     at.addTo(f);
@@ -32,10 +32,13 @@ void writeState(const std::string& caseDir, const RestartPoint& at, const SlideC
     f.add("initialFront", s.initialFront);
     f.add("initialLength", s.initialLength);
     f.add("initialHeight", s.initialHeight);
+    f.add("frontSurges", static_cast<double>(surges.count));
+    f.add("frontRunning", surges.running ? 1.0 : 0.0);
+    f.add("frontStalled", surges.stalled ? 1.0 : 0.0);
     f.write(output::statePath(caseDir, at.time, "slideDAM"));
 }
 
-RestartPoint readState(const std::string& path, SlideColumns& s)
+RestartPoint readState(const std::string& path, SlideColumns& s, FrontSurges& surges)
 {
     const output::StateFile f = output::StateFile::read(path);
     const std::vector<double>& area = f.vector("area");
@@ -68,6 +71,12 @@ RestartPoint readState(const std::string& path, SlideColumns& s)
     s.initialFront = f.scalar("initialFront");
     s.initialLength = f.scalar("initialLength");
     s.initialHeight = f.scalar("initialHeight");
+    if (f.has("frontSurges"))
+    {
+        surges.count = static_cast<int>(f.scalar("frontSurges"));
+        surges.running = f.scalar("frontRunning") != 0.0;
+        surges.stalled = f.scalar("frontStalled") != 0.0;
+    }
 
     return output::RestartClock::readFrom(f);
 }

@@ -66,10 +66,11 @@ int main(int argc, char** argv)
         long long step = 0;
         output::WriteSchedule schedule(rc);
         output::MechanismHistory mechanisms;
+        dam::FrontSurges surges;
         const double restartAt = output::restartTime(caseDir, rc, "slideDAM");
         if (restartAt > 0.0)
         {
-            const dam::RestartPoint at = dam::readState(output::statePath(caseDir, restartAt, "slideDAM"), slide);
+            const dam::RestartPoint at = dam::readState(output::statePath(caseDir, restartAt, "slideDAM"), slide, surges);
             t = at.time;
             step = at.step;
             schedule = at.schedule(rc);
@@ -106,7 +107,7 @@ int main(int argc, char** argv)
             if (series) series->add(t, dam::profile(slide, sc));
             if (controls.writeState)
             {
-                dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, slide);
+                dam::writeState(caseDir, {t, step, schedule.origin(), schedule.index(), schedule.interval(), mechanisms}, slide, surges);
                 purge.written(t);
             }
         };
@@ -140,6 +141,7 @@ int main(int argc, char** argv)
             speedBeforeStep = speed;
             integrator.advance(slide, s.dt, t);
             speed = dam::DamIntegrator::maxSpeed(slide);
+            surges.update(slide.U.back(), rc.restVelocity);
             ++step;
             t = s.time;
             if (!warnedPastBase)
@@ -197,9 +199,17 @@ int main(int argc, char** argv)
         summary.addString("mechanism", output::runMechanism(mechanisms, finalMechanism, atRest));
         summary.addString("final_state_mechanism", finalMechanism);
         summary.addString("dam_applicability", applicability.verdict);
+        summary.addNumber("front_surges", surges.count);
         summary.extra.emplace_back("mechanism_history", output::mechanismHistoryJson(mechanisms));
         summary.write(caseDir);
 
+        if (surges.count >= dam::FrontSurges::warnFrom)
+        {
+            std::cout << "\nWarning: the front stalled and was carried on by the body overrunning it " << surges.count
+                      << " times. The runout of a sheet that surges so scatters by several per cent with the column "
+                      << "count (Table 1 Cases 4 and 5: validation/dam/timeSchemes.md); compare runs with a few "
+                      << "columns more and fewer (system/damDict columns).\n";
+        }
         std::cout << "\nRunout " << std::setprecision(6) << slide.front() << " m at t = " << t << " s ("
                   << (atRest ? "at rest" : "still moving") << "), " << step << " steps, wall time "
                   << std::setprecision(3) << summary.wallTime << " s\nEnd\n" << std::endl;

@@ -358,6 +358,29 @@ TEST(SlideDAM, FaceCollapseSchemesApproachOneRunoutAsTheStepShrinks)
                                                              << rk3.back() << " m";
 }
 
+// A surge is the front carried on after it stalled; the release from rest is not one, nor a stalled front that
+// creeps or jitters below surgeSpeed (Table 1 Cases 4 and 5 surge 2-10 times, the other cases at most once).
+TEST(SlideDAM, FrontSurgesCountOnlyRestartsAfterAStall)
+{
+    dam::FrontSurges surges;
+    const double rest = 0.01;
+    for (double v : {0.0, 0.001, 0.5, 3.0, 40.0, 2.0, 0.5})   // released, run, slowing: no stall yet
+    {
+        surges.update(v, rest);
+    }
+    EXPECT_EQ(surges.count, 0);
+    for (double v : {0.005, 0.2, 0.9, 0.002})   // stalled, jitters below surgeSpeed
+    {
+        surges.update(v, rest);
+    }
+    EXPECT_EQ(surges.count, 0);
+    for (double v : {1.5, 60.0, 0.0, 0.0, -2.0, 0.0, 0.3})   // overrun, stalled, overrun again (either direction)
+    {
+        surges.update(v, rest);
+    }
+    EXPECT_EQ(surges.count, 2);
+}
+
 // A plug moving at a vanishing speed is at rest, and a column pushed past its strength starts from it: the
 // linearised resistance's Jacobian grows as 1/U_p, and at U_p ~ 1e-224 m/s it had frozen a node that 70 m/s2
 // pushed (Table 1 Case 4 with rk3, validation/dam/README.md).
