@@ -185,6 +185,11 @@ def readme(case, row, paper):
                      "508 s on 2 ranks, `top slip;`): the front is at 813 m at 30 s, within 2.7 % of slideMPM's "
                      "foremost particle at 10, 20 and 30 s and 17-20 % behind slideDAM (`validation/cfd/README.md`, "
                      "\"Case 4\", where Case 5 follows).")
+    if case in (4, 5):
+        lines.append("- slideDAM warns at the end that the front surged: its thin sheet stalls and is overrun by thicker "
+                     "parts of the body behind it, and the runout is then one draw from a spread. With a few columns "
+                     "more or fewer (`columns` in `system/damDict`) it moves by %s around a mean that grows with the "
+                     "columns (`validation/dam/timeSchemes.md`)." % ("2-4 %" if case == 4 else "3-10 %"))
     if case in (6, 7):
         lines.append("- slideMPM and slideFoam stop this slide at 1.5-1.9 m where the paper has 7.9-8.7 m: Eq. (1)'s "
                      "rate effect strengthens a collapsing face (s_u 1.86 s_uo at 1 1/s) and it stands again. Without "
