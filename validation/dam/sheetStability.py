@@ -27,7 +27,6 @@ The script runs slideDAM (fast setting, tutorials/table1) on:
   sheet is thinner than h_c = s_u/(rho' g sin(theta)), against sigma_inf at the sheet's mean thickness and s_u.
 Writes sheetStability.json, sheetStability.md and sheetStability.png here (about 5 minutes on 2 cores, 25 with
 --fine); --stored rewrites the .md and .png from the .json."""
-import json
 import math
 import os
 import shutil
@@ -238,16 +237,7 @@ def write(data):
 
 
 def main():
-    args = options.parse(__doc__, flags=("--fine", "--stored"))
-    path = os.path.join(HERE, "sheetStability.json")
-    if args.get("--stored"):
-        with open(path) as f:
-            data = json.load(f)
-    else:
-        data = measure(args.get("--fine", False))
-        with open(path, "w") as f:
-            json.dump(data, f, indent=1)
-    write(data)
+    write(options.measured_or_stored(__doc__, os.path.join(HERE, "sheetStability.json"), measure))
     print(open(os.path.join(HERE, "sheetStability.md")).read())
 
 

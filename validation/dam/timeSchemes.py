@@ -20,7 +20,6 @@ function of the step at all:
   before the final rest: the surges, as slideDAM counts them every step (summary.json `front_surges`).
 Writes timeSchemes.json, timeSchemes.md and timeSchemes.png here (about 10 minutes on 2 cores, 14 with --fine);
 --stored rewrites the .md and .png from the .json."""
-import json
 import os
 import shutil
 import sys
@@ -205,16 +204,7 @@ def write(data):
 
 
 def main():
-    args = options.parse(__doc__, flags=("--fine", "--stored"))
-    path = os.path.join(HERE, "timeSchemes.json")
-    if args.get("--stored"):
-        with open(path) as f:
-            data = json.load(f)
-    else:
-        data = measure(args.get("--fine", False))
-        with open(path, "w") as f:
-            json.dump(data, f, indent=1)
-    write(data)
+    write(options.measured_or_stored(__doc__, os.path.join(HERE, "timeSchemes.json"), measure))
     print(open(os.path.join(HERE, "timeSchemes.md")).read())
 
 

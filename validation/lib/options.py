@@ -24,3 +24,17 @@ def parse(doc, flags=(), valued=()):
                                                   a, doc))
         k += 1
     return given
+
+
+def measured_or_stored(doc, path, measure):
+    """The data of a study that takes --fine and --stored: with --stored the JSON at path, otherwise measure(fine),
+    written to path first."""
+    import json
+    args = parse(doc, flags=("--fine", "--stored"))
+    if args.get("--stored"):
+        with open(path) as f:
+            return json.load(f)
+    data = measure(args.get("--fine", False))
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1)
+    return data

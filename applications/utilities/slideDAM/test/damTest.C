@@ -60,6 +60,29 @@ void runTo(dam::DamIntegrator& integ, dam::SlideColumns& s, double& t, double T)
     }
 }
 
+// Runs the scene from rest with the given scheme and Courant number, stopping as slideDAM does once every node is
+// slower than 0.01 m/s and no faster than before the step, or at tEnd; t is where it stopped.
+dam::SlideColumns runToRest(const scene::Scene& sc, dam::DamControls::TimeScheme scheme, double courant, int columns,
+                            double tEnd, double& t)
+{
+    dam::DamControls c = fast(columns);
+    c.timeScheme = scheme;
+    c.courant = courant;
+    dam::DamIntegrator integ(sc, c);
+    dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
+    t = 0.0;
+    double speed = HUGE_VAL, previous = HUGE_VAL;
+    while (t < tEnd && !(t > 1.0 && dam::DamIntegrator::atRest(speed, previous, 0.01)))
+    {
+        previous = speed;
+        const double dt = integ.timeStep(s);
+        integ.advance(s, dt, t);
+        t += dt;
+        speed = dam::DamIntegrator::maxSpeed(s);
+    }
+    return s;
+}
+
 } // namespace
 
 TEST(SlideDAM, RigidBlockOnFrictionalBaseFollowsTheSlidingLaw)
@@ -279,23 +302,11 @@ TEST(SlideDAM, ThirdOrderStepAgreesWithSmallEulerSteps)
     sc.rheology.s_uo = 150.0;
     sc.rheology.eta = 0.35;
     sc.rheology.n = 0.15;
+    const double area0 = dam::SlideColumns::fromScene(sc, 200).totalArea();
     auto runout = [&](dam::DamControls::TimeScheme scheme, double courant)
     {
-        dam::DamControls c = fast(200);
-        c.timeScheme = scheme;
-        c.courant = courant;
-        dam::DamIntegrator integ(sc, c);
-        dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
-        const double area0 = s.totalArea();
-        double t = 0.0, speed = HUGE_VAL, previous = HUGE_VAL;
-        while (t < 400.0 && !(t > 1.0 && dam::DamIntegrator::atRest(speed, previous, 0.01)))
-        {
-            previous = speed;
-            const double dt = integ.timeStep(s);
-            integ.advance(s, dt, t);
-            t += dt;
-            speed = dam::DamIntegrator::maxSpeed(s);
-        }
+        double t;
+        const dam::SlideColumns s = runToRest(sc, scheme, courant, 200, 400.0, t);
         EXPECT_LT(t, 400.0) << "not at rest";
         EXPECT_NEAR(s.totalArea(), area0, 1e-12*area0);
         for (int j = 1; j < s.nNodes(); ++j) EXPECT_GT(s.x[j], s.x[j - 1]);
@@ -324,22 +335,10 @@ TEST(SlideDAM, FaceCollapseSchemesApproachOneRunoutAsTheStepShrinks)
     sc.rheology.gdotRef = 0.06;
     auto runout = [&](dam::DamControls::TimeScheme scheme, double courant)
     {
-        dam::DamControls c = fast(200);
-        c.timeScheme = scheme;
-        c.courant = courant;
-        dam::DamIntegrator integ(sc, c);
-        dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
-        double t = 0.0, speed = HUGE_VAL, previous = HUGE_VAL;
-        while (t < 60.0 && !(t > 1.0 && dam::DamIntegrator::atRest(speed, previous, 0.01)))
-        {
-            previous = speed;
-            const double dt = integ.timeStep(s);
-            integ.advance(s, dt, t);
-            t += dt;
-            speed = dam::DamIntegrator::maxSpeed(s);
-        }
+        double t;
+        const double front = runToRest(sc, scheme, courant, 200, 60.0, t).front();
         EXPECT_LT(t, 60.0) << "not at rest";
-        return s.front();
+        return front;
     };
     using Scheme = dam::DamControls::TimeScheme;
     std::vector<double> euler, rk3;
