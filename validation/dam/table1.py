@@ -4,7 +4,11 @@ on tutorials/table1/case01..13 and writes table1.md and table1.png beside this
 script: the paper's DAM runout, slideDAM's, the error, the detected mechanism;
 table1.json holds the raw results with the front history for validation/report.py.
 
-Usage: validation/dam/table1.py [--columns N] [--setting reference|fast]
+With --courant C the thirteen cases run at that Courant number instead of the fast setting's, and only
+table1Courant.json is written, which validation/report.py shows beside the table as slideDAM with its step
+converged (Courant 1/16: validation/dam/timeSchemes.md and sheetStability.md; about 5 minutes).
+
+Usage: validation/dam/table1.py [--columns N] [--setting reference|fast] [--courant C]
 (after ./Allwmake; the default is the fast setting with 800 columns)"""
 import argparse
 import json
@@ -31,14 +35,17 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--columns", type=int, default=800)
     ap.add_argument("--setting", default="fast", choices=["fast", "reference"])
+    ap.add_argument("--courant", type=float, help="the Courant number (fast setting): writes table1Courant.json only")
     args = ap.parse_args()
+    if args.courant is not None and args.setting != "fast":
+        ap.error("--courant needs the fast setting")
     paper = paper_dam()
     paper[9.5] = ("block sliding over-predicted by the original algorithm (~350 m at 20 s)", None)
     work = tempfile.mkdtemp(prefix="slideDAM_table1_")
     results = []
     raw = []
     # Case 9 twice: the enhanced base (Eq. 5) and the original algorithm (Eq. 4).
-    for c in list(range(1, 14)) + [9.5]:
+    for c in list(range(1, 14)) + ([9.5] if args.courant is None else []):
         src = os.path.join(top, "tutorials", "table1", "case%02d" % int(c))
         d = os.path.join(work, "case%s" % c)
         shutil.copytree(src, d, ignore=shutil.ignore_patterns("postProcessing", "log.*"))
@@ -48,6 +55,8 @@ def main():
             f.write("setting %s;\n" % args.setting)
             if args.setting == "fast":
                 f.write("columns %d;\n" % args.columns)
+            if args.courant is not None:
+                f.write("courant %g;\n" % args.courant)
             f.write("writeFields no;\n")
         p = subprocess.run([which("slideDAM"), "-case", d], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            env=slidefoam_env())
@@ -60,10 +69,16 @@ def main():
                         r["frontVelocity"][-1], s["wall_time_s"]))
         raw.append({"case": c, "runout": s["runout_m"], "endTime": s["end_time_s"], "atRest": s["at_rest"],
                     "mechanism": s["mechanism"], "wall": s["wall_time_s"], "columns": s["problem_size"],
-                    "setting": args.setting, "maxThickness": float(r["maxThickness"][-1]),
+                    "setting": args.setting, "courant": args.courant, "frontSurges": s.get("front_surges"),
+                    "maxThickness": float(r["maxThickness"][-1]),
                     "history": [[float(a), float(b), float(v)]
                                 for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]})
         print("case %s: %s" % (c, results[-1][1:]), flush=True)
+    if args.courant is not None:
+        with open(os.path.join(here, "table1Courant.json"), "w") as f:
+            json.dump(raw, f, indent=1)
+        shutil.rmtree(work, ignore_errors=True)
+        return
     with open(os.path.join(here, "table1.json"), "w") as f:
         json.dump(raw, f, indent=1)
 
