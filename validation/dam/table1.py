@@ -70,9 +70,10 @@ def main():
         raw.append({"case": c, "runout": s["runout_m"], "endTime": s["end_time_s"], "atRest": s["at_rest"],
                     "mechanism": s["mechanism"], "wall": s["wall_time_s"], "columns": s["problem_size"],
                     "setting": args.setting, "courant": args.courant, "frontSurges": s.get("front_surges"),
-                    "maxThickness": float(r["maxThickness"][-1]),
-                    "history": [[float(a), float(b), float(v)]
-                                for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]})
+                    "maxThickness": float(r["maxThickness"][-1])})
+        if args.courant is None:   # the report plots the table's histories only
+            raw[-1]["history"] = [[float(a), float(b), float(v)]
+                                  for a, b, v in zip(r["time"], r["front"], r["frontVelocity"])]
         print("case %s: %s" % (c, results[-1][1:]), flush=True)
     if args.courant is not None:
         with open(os.path.join(here, "table1Courant.json"), "w") as f:
