@@ -185,6 +185,37 @@ Ambient readAmbient(const Dictionary& d)
     return a;
 }
 
+std::vector<Site> readSites(const Dictionary& d, const BaseProfile& base)
+{
+    // One particle reduction a step per site in slideMPM: a few dozen are plenty for a crossing survey.
+    constexpr std::size_t maxSites = 32;
+    std::vector<Site> sites;
+    for (const Dictionary::Entry& e : d.entries())
+    {
+        if (!e.dict)
+        {
+            d.fail(e.key, "a site is a sub-dictionary: " + e.key + " { position <arc length along the base [m]>; }");
+        }
+        const Dictionary& sd = *e.dict;
+        sd.checkKnownKeys({"position"});
+        Site site;
+        site.name = e.key;
+        site.position = sd.getScalarInRange("position", -1e7, 1e7, true, true,
+                                            "arc length along the base [m]");
+        if (!base.isPlanar() && (site.position < 0.0 || site.position > base.length()))
+        {
+            sd.fail("position", "the site at " + std::to_string(site.position)
+                    + " m does not lie on the base polyline [0, " + std::to_string(base.length()) + "] m");
+        }
+        sites.push_back(site);
+    }
+    if (sites.size() > maxSites)
+    {
+        d.fail(sites[maxSites].name, "more than " + std::to_string(maxSites) + " sites");
+    }
+    return sites;
+}
+
 RunControl readControl(const Dictionary& d)
 {
     RunControl c;
@@ -278,7 +309,7 @@ Scene Scene::fromDictionaries(const Dictionary& d, const Dictionary& c, const st
     sc.caseDir = caseDir.empty() ? "." : caseDir;
     sc.caseName = baseName(sc.caseDir);
 
-    d.checkKnownKeys({"FoamFile", "title", "slide", "rheology", "base", "ambient", "g"});
+    d.checkKnownKeys({"FoamFile", "title", "slide", "rheology", "base", "ambient", "g", "sites"});
     sc.title = d.getWord("title", sc.caseName);
     sc.g = d.getScalarInRange("g", 0.0, 100.0, false, true, "gravitational acceleration [m/s2]");
     sc.base = readBase(d.subDict("base"), sc.interface);
@@ -290,6 +321,8 @@ Scene Scene::fromDictionaries(const Dictionary& d, const Dictionary& c, const st
         d.subDict("ambient").fail("density", "the ambient phase must be lighter than the slide ("
                                   + std::to_string(sc.slide.density) + " kg/m3)");
     }
+
+    if (d.found("sites")) sc.sites = readSites(d.subDict("sites"), sc.base);
 
     sc.control = readControl(c);
     return sc;
@@ -315,6 +348,11 @@ std::string Scene::describe() const
     os << "\n    base   " << (base.isPlanar() ? "planar" : "polyline") << ", interface " << interface.typeName();
     if (interface.type == Interface::Type::frictional) os << ", s_b " << interface.s_b << " Pa";
     if (interface.type == Interface::Type::hydroplaning) os << ", C_F " << interface.C_F;
+    if (!sites.empty())
+    {
+        os << "\n    sites ";
+        for (const Site& st : sites) os << ' ' << st.name << " at " << st.position << " m";
+    }
     return os.str();
 }
 

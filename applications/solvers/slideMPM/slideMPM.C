@@ -20,6 +20,7 @@
 #include "outputContract.H"
 #include "writeSchedule.H"
 #include "scene.H"
+#include "siteSampling.H"
 #include "timeIntegrator.H"
 
 #include <cmath>
@@ -143,6 +144,10 @@ int main(int argc, char** argv)
             series->truncateAfter(restartAt > 0.0 ? restartAt : -1.0);
         }
         mpm::StepStatistics stats = restartStats ? *restartStats : mpm::TimeIntegrator::statistics(points, rows);
+        // Sampled every step: a passing front is faster than the writes.
+        const mpm::SiteSampler siteSampler(sc.sites, frame, d);
+        output::SiteMonitor sites(sc.sites, sc.slide.frontPosition(), caseDir, "slideMPM", restartAt > 0.0, t);
+        if (!siteSampler.empty()) sites.observe(t, siteSampler.sample(points, stats));
         output::RunoutSample last;
         output::StatePurge purge(caseDir, "slideMPM", controls.statesKept(rc.purgeWrite));
         // The front zone is the slide's foremost H0: a length of the slide, not of the cell.
@@ -170,6 +175,7 @@ int main(int argc, char** argv)
             const auto hp = std::make_shared<const mpm::HostPoints>(points);
             last = mpm::runoutSample(*hp, frame, t, initialFront, d);
             if (!logRow) return;
+            sites.write(t);   // here, not in the job: the record goes on with the next step
             // What the state records, as it is now.
             const output::RunoutSample sample = last;
             const long long stepNow = step;
@@ -292,6 +298,7 @@ int main(int argc, char** argv)
             moved = moved || next.momentumX > rc.restVelocity*initialMass;
             turned = turned || (hydroplaning && moved && stats.momentumX > 0.0 && next.momentumX <= 0.0);
             stats = next;
+            if (!siteSampler.empty()) sites.observe(t, siteSampler.sample(points, stats));
             if (!warnedPastBase)
             {
                 const std::string warning = sc.base.pastEndWarning(frame.level.arcLength(stats.xmin),
@@ -384,6 +391,7 @@ int main(int argc, char** argv)
         }
         frontResolution.addTo(summary, last.front);
         output::addMechanism(summary, mechanisms, mech, atRest, H0);
+        sites.addTo(summary);
         summary.write(caseDir);
         if (times)
         {

@@ -43,6 +43,24 @@ double basalStress(const SlideColumns& s, const scene::Scene& sc, int j)
     return std::min(shearStrength(s, sc, j), sb);
 }
 
+std::vector<output::SiteFlow> siteFlow(const SlideColumns& s, const std::vector<scene::Site>& sites)
+{
+    std::vector<output::SiteFlow> flow(sites.size());
+    for (std::size_t k = 0; k < sites.size(); ++k)
+    {
+        const double at = sites[k].position;
+        if (at < s.x.front() || at > s.x.back()) continue;
+        // The column over the site: the last node at or before it.
+        const int i = std::min(static_cast<int>(std::upper_bound(s.x.begin(), s.x.end(), at) - s.x.begin()) - 1,
+                               s.nColumns() - 1);
+        const double w = (at - s.x[i])/(s.x[i + 1] - s.x[i]);
+        flow[k].covered = true;
+        flow[k].thickness = s.columnThickness(i);
+        flow[k].velocity = (1.0 - w)*s.U[i] + w*s.U[i + 1];
+    }
+    return flow;
+}
+
 output::PolyData profile(const SlideColumns& s, const scene::Scene& sc)
 {
     output::PolyData pd;

@@ -84,6 +84,8 @@ int main(int argc, char** argv)
         output::prepareOutput(caseDir, "slideDAM");
         // A restart keeps what was written up to its start and replaces the rest.
         output::RunoutLog log(caseDir, "slideDAM", restartAt > 0.0, restartAt);
+        output::SiteMonitor sites(sc.sites, sc.slide.frontPosition(), caseDir, "slideDAM", restartAt > 0.0, t);
+        if (!sites.empty()) sites.observe(t, dam::siteFlow(slide, sc.sites));
         std::unique_ptr<output::PvdSeries> series;
         if (controls.writeFields)
         {
@@ -104,6 +106,7 @@ int main(int argc, char** argv)
                                      + std::to_string(bound) + " J/m that gravity can have supplied");
             }
             log.write(sample);
+            sites.write(t);
             if (series) series->add(t, dam::profile(slide, sc));
             if (controls.writeState)
             {
@@ -144,6 +147,7 @@ int main(int argc, char** argv)
             surges.update(slide.U.back(), rc.restVelocity);
             ++step;
             t = s.time;
+            if (!sites.empty()) sites.observe(t, dam::siteFlow(slide, sc.sites));
             if (!warnedPastBase)
             {
                 const std::string warning = sc.base.pastEndWarning(slide.x.front(), slide.x.back(), t);
@@ -201,6 +205,7 @@ int main(int argc, char** argv)
         summary.addString("dam_applicability", applicability.verdict);
         summary.addNumber("front_surges", surges.count);
         summary.extra.emplace_back("mechanism_history", output::mechanismHistoryJson(mechanisms));
+        sites.addTo(summary);
         summary.write(caseDir);
 
         if (surges.count >= dam::FrontSurges::warnFrom)

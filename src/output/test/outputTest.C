@@ -3,6 +3,7 @@
 #include "dictionary.H"
 #include "outputContract.H"
 #include "restartState.H"
+#include "siteMonitor.H"
 #include "vtkWriter.H"
 
 #include <gtest/gtest.h>
@@ -233,6 +234,100 @@ TEST(OutputContract, RunoutLogRoundTripAndRestart)
     ASSERT_EQ(again.size(), 4u);
     EXPECT_DOUBLE_EQ(again[2].time, 1.0);
     EXPECT_DOUBLE_EQ(again[3].front, 9.0);
+    fs::remove_all(c);
+}
+
+namespace
+{
+
+// A front passing two sites at 2 m/s from s = 10 m, the slide 1 m thick behind
+// it and 4 m long, its speed 2 m/s until 3 s and slowing after; a third site it never reaches.
+std::vector<SiteFlow> passingSlide(const double t, const std::vector<slide::scene::Site>& sites)
+{
+    const double front = 10.0 + 2.0*std::min(t, 3.0) + (t > 3.0 ? 0.5*(t - 3.0) : 0.0);
+    const double speed = t < 3.0 ? 2.0 : 0.5;
+    std::vector<SiteFlow> flow(sites.size());
+    for (std::size_t k = 0; k < sites.size(); ++k)
+    {
+        const double x = sites[k].position;
+        if (x > front || x < front - 4.0) continue;
+        flow[k].covered = true;
+        flow[k].thickness = 1.0 + 0.1*(front - x);
+        flow[k].velocity = speed;
+    }
+    return flow;
+}
+
+} // namespace
+
+TEST(SiteMonitor, RecordsArrivalPeakAndPassageAndRestoresThemAtARestart)
+{
+    const fs::path c = freshDir("sites");
+    const std::vector<slide::scene::Site> sites{{"pipe", 12.0}, {"cable", 15.0}, {"far", 100.0}};
+    const double dt = 0.25;
+    const auto run = [&](SiteMonitor& m, double t0, double t1)
+    {
+        for (double t = t0; t <= t1 + 1e-9; t += dt)
+        {
+            m.observe(t, passingSlide(t, sites));
+            if (std::fabs(t - std::round(t)) < 1e-9) m.write(t);
+        }
+    };
+    {
+        SiteMonitor m(sites, 10.0, c.string(), "slideDAM", false, 0.0);
+        run(m, 0.0, 8.0);
+        const auto& r = m.records();
+        // The front (10 + 2 t) reaches 12 m at 1 s and 15 m at 2.5 s; it slows to 0.5 m/s after 3 s.
+        EXPECT_DOUBLE_EQ(r[0].arrival, 1.0);
+        EXPECT_DOUBLE_EQ(r[1].arrival, 2.5);
+        EXPECT_DOUBLE_EQ(r[0].peakSpeed, 2.0);
+        EXPECT_DOUBLE_EQ(r[0].peakSpeedTime, 1.0);        // the first time at the peak
+        EXPECT_DOUBLE_EQ(r[1].peakSpeedTime, 2.5);
+        EXPECT_DOUBLE_EQ(r[1].maxThicknessTime, 8.0);      // the deposit thickens as the front creeps on
+        // The rear (front - 4) leaves 12 m at 3 s: last covered then, thickest (1.4 m) just before.
+        EXPECT_DOUBLE_EQ(r[0].lastCovered, 3.0);
+        EXPECT_NEAR(r[0].maxThickness, 1.4, 1e-12);
+        EXPECT_DOUBLE_EQ(r[0].maxThicknessTime, 3.0);
+        EXPECT_FALSE(r[0].now.covered);
+        EXPECT_TRUE(r[1].now.covered);
+        EXPECT_TRUE(std::isnan(r[2].arrival));
+        const std::string json = m.json();
+        EXPECT_NE(json.find("\"name\": \"far\", \"position_m\": 100, \"distance_from_initial_front_m\": 90, "
+                            "\"recorded_from_s\": 0, \"arrival_time_s\": null"), std::string::npos) << json;
+        EXPECT_NE(json.find("\"covered_at_end\": true, \"final_thickness_m\": 1.35"), std::string::npos) << json;
+    }
+    const std::string path = (c/"postProcessing/slideDAM/sites.dat").string();
+    const std::string uninterrupted = slurp(path);
+    // A restart at 2 s restores the record of that row and, run on, writes the same file.
+    ASSERT_EQ(readSiteRecords(path, sites, 2.0).size(), 3u);
+    EXPECT_DOUBLE_EQ(readSiteRecords(path, sites, 2.0)[0].arrival, 1.0);
+    {
+        SiteMonitor m(sites, 10.0, c.string(), "slideDAM", true, 2.0);
+        EXPECT_DOUBLE_EQ(m.records()[0].peakSpeedTime, 1.0);
+        run(m, 2.25, 8.0);
+    }
+    EXPECT_EQ(slurp(path), uninterrupted);
+    // Other sites at a restart: a fresh file, the records kept from the restart on.
+    {
+        const std::vector<slide::scene::Site> moved{{"pipe", 13.0}};
+        EXPECT_TRUE(readSiteRecords(path, moved, 2.0).empty());
+        SiteMonitor m(moved, 10.0, c.string(), "slideDAM", true, 2.0);
+        EXPECT_DOUBLE_EQ(m.records()[0].recordedFrom, 2.0);
+        EXPECT_TRUE(std::isnan(m.records()[0].arrival));
+        m.observe(2.0, passingSlide(2.0, moved));
+        EXPECT_DOUBLE_EQ(m.records()[0].arrival, 2.0);
+    }
+    // No sites: nothing written.
+    {
+        const fs::path e = freshDir("noSites");
+        SiteMonitor m({}, 10.0, e.string(), "slideDAM", false, 0.0);
+        m.write(0.0);
+        EXPECT_FALSE(fs::exists(e/"postProcessing/slideDAM/sites.dat"));
+        Summary sum;
+        m.addTo(sum);
+        EXPECT_TRUE(sum.extra.empty());
+        fs::remove_all(e);
+    }
     fs::remove_all(c);
 }
 

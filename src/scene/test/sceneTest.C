@@ -201,6 +201,51 @@ TEST_F(SceneFixture, PolylineMustBeMonotonicAndHoldTheSlide)
     EXPECT_NE(e.message().find("does not lie on the base"), std::string::npos) << e.what();
 }
 
+TEST_F(SceneFixture, SitesAreReadInOrderAndBadOnesNamed)
+{
+    std::string sc = flumeScene;
+    write(sc + "sites\n{\n    pipeline { position 4.5; }\n    cable    { position -1; }\n}\n");
+    const Scene s = Scene::read(dir.string());
+    ASSERT_EQ(s.sites.size(), 2u);
+    EXPECT_EQ(s.sites[0].name, "pipeline");
+    EXPECT_DOUBLE_EQ(s.sites[0].position, 4.5);
+    EXPECT_EQ(s.sites[1].name, "cable");
+    EXPECT_DOUBLE_EQ(s.sites[1].position, -1.0);
+    EXPECT_NE(s.describe().find("pipeline at 4.5 m"), std::string::npos) << s.describe();
+
+    struct Bad { std::string sites, key; int line; std::string message; };
+    const std::vector<Bad> bad = {
+        {"sites\n{\n    pipeline 4.5;\n}\n", "sites.pipeline", 34, "a site is a sub-dictionary"},
+        {"sites\n{\n    pipeline { position 4.5; depth 2; }\n}\n", "sites.pipeline.depth", 34, "unknown key"},
+        {"sites\n{\n    pipeline { }\n}\n", "sites.pipeline.position", 34, "missing"},
+        {"sites\n{\n    pipeline { position abc; }\n}\n", "sites.pipeline.position", 34, ""},
+        {"sites\n{\n    pipeline { position 1e9; }\n}\n", "sites.pipeline.position", 34, "must lie in"},
+    };
+    for (const Bad& b : bad)
+    {
+        write(sc + b.sites);
+        const InputError e = readError();
+        EXPECT_EQ(e.key(), b.key) << b.sites << " -> " << e.what();
+        EXPECT_EQ(e.line(), b.line) << b.sites << " -> " << e.what();
+        EXPECT_NE(e.message().find(b.message), std::string::npos) << e.what();
+    }
+
+    // On a polyline the site must lie on it.
+    write(edit("profile   planar;\n    angle     3.43;", "profile polyline;\n    points ((0 0) (10 -1));")
+          + "sites\n{\n    pipeline { position 12; }\n}\n");
+    InputError e = readError();
+    EXPECT_EQ(e.key(), "sites.pipeline.position");
+    EXPECT_NE(e.message().find("does not lie on the base polyline"), std::string::npos) << e.what();
+
+    // At most 32: slideMPM reduces over its particles for every site every step.
+    std::string many = "sites\n{\n";
+    for (int k = 0; k < 33; ++k) many += "    s" + std::to_string(k) + " { position " + std::to_string(k) + "; }\n";
+    write(sc + many + "}\n");
+    e = readError();
+    EXPECT_EQ(e.key(), "sites.s32");
+    EXPECT_NE(e.message().find("more than 32 sites"), std::string::npos) << e.what();
+}
+
 TEST_F(SceneFixture, SlideBelowTheBaseIsRejected)
 {
     std::string sc = edit("shape        rectangle;", "shape profile;\n    thickness ((0 0) (1 -0.2) (2 0));");

@@ -244,6 +244,8 @@ Foam::functionObjects::slideRunout::slideRunout
         if (!kept.empty() && kept.front().mass > 0) initialVolume_ = kept.front().mass/scene_.slide.density;
         startRowKept_ = !kept.empty() && mag(kept.back().time - t0) <= 1e-9*max(mag(t0), scalar(1));
         mechanismLog_.reset(new slide::output::MechanismLog(runTime.globalPath(), "slideFoam", t0 > 0, t0));
+        sites_.reset(new slide::output::SiteMonitor(scene_.sites, scene_.slide.frontPosition(), runTime.globalPath(),
+                                                    "slideFoam", t0 > 0, t0));
         mechanisms_ = mechanismLog_->kept();
     }
     Pstream::scatter(initialVolume_);
@@ -342,6 +344,24 @@ bool Foam::functionObjects::slideRunout::execute()
         s.sample.rear = sr - s0;
         s.sample.frontVelocity = colAV[front] > 0 ? colAVU[front]/colAV[front] : 0;
     }
+    if (sites_ && !sites_->empty())
+    {
+        // The column over each site (the base face nearest it): its slide volume over
+        // its base face is the thickness normal to the base, its alpha-weighted mean
+        // velocity along the base the velocity; covered between the alpha = 0.5 rear and front.
+        std::vector<slide::output::SiteFlow> flow(scene_.sites.size());
+        for (std::size_t k = 0; k < flow.size(); ++k)
+        {
+            const scalar at = scene_.sites[k].position;
+            if (front < 0 || nCol == 0 || at < s.sample.rear + s0 || at > s.sample.front + s0) continue;
+            label c = label(std::lower_bound(columnS_.begin(), columnS_.end(), at) - columnS_.begin());
+            if (c == nCol || (c > 0 && at - columnS_[c - 1] < columnS_[c] - at)) --c;
+            flow[k].covered = true;
+            flow[k].thickness = colAV[c]/columnArea_[c];
+            flow[k].velocity = colAV[c] > 0 ? colAVU[c]/colAV[c] : 0;
+        }
+        sites_->observe(time_.value(), flow);
+    }
     // Slide on the base in the last column is leaving through the open downslope
     // end, whether or not the (thin) front there still reaches alpha = 0.5.
     // Ends made cyclic (an infinite layer, validation/cfd/rateLayer.py) lose nothing.
@@ -422,7 +442,11 @@ bool Foam::functionObjects::slideRunout::execute()
     if (time_.writeTime() || time_.timeIndex() == time_.startTimeIndex())
     {
         // A restart's start row is already in runout.dat, as slideMPM and slideDAM leave it.
-        if (log_ && !(startRowKept_ && time_.timeIndex() == time_.startTimeIndex())) log_->write(state_.sample);
+        if (log_ && !(startRowKept_ && time_.timeIndex() == time_.startTimeIndex()))
+        {
+            log_->write(state_.sample);
+            sites_->write(time_.value());
+        }
         recordMechanism();
 
         // Rest: every slide cell slower than restVelocity at two successive writes.
@@ -451,7 +475,11 @@ bool Foam::functionObjects::slideRunout::execute()
 
 void Foam::functionObjects::slideRunout::record()
 {
-    if (log_) log_->write(state_.sample);
+    if (log_)
+    {
+        log_->write(state_.sample);
+        sites_->write(time_.value());
+    }
     recordMechanism();
 }
 
@@ -499,6 +527,7 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
     sum.addNumber("slide_share_above_half", total > 0 ? coherent/total : 0);
     // As slideMPM reads it off its particles (src/output/runoutMechanism.H).
     slide::output::addMechanism(sum, mechanisms_, mech, atRest, scene_.slide.height);
+    sites_->addTo(sum);
     if (!setting_.empty())
     {
         sum.addString("setting", setting_);
