@@ -157,9 +157,10 @@ void SiteMonitor::observe(const double time, const std::vector<SiteFlow>& flow)
 void SiteMonitor::write(const double time)
 {
     if (sites_.empty()) return;
-    // Every digit: a restart restores the record from this row, and a rounded maximum
-    // would be overtaken by a deposit at rest that keeps its thickness exactly.
-    os_ << std::setprecision(std::numeric_limits<double>::max_digits10) << time;
+    // The time as runout.dat writes it; the record with every digit: a restart restores
+    // it from this row, and a rounded maximum would be overtaken by a deposit at rest
+    // that keeps its thickness exactly.
+    os_ << std::setprecision(10) << time << std::setprecision(std::numeric_limits<double>::max_digits10);
     for (const SiteRecord& r : records_)
     {
         os_ << ' ' << (r.now.covered ? 1 : 0);

@@ -636,7 +636,7 @@ StepStatistics TimeIntegrator::step(MaterialPoints& mp, BackgroundGrid& grid, co
 }
 
 void advanceTo(const TimeIntegrator& integrator, MaterialPoints& mp, BackgroundGrid& grid, double& t, const double T,
-               StepStatistics& stats, double* boundaryWork)
+               StepStatistics& stats, double* boundaryWork, const std::function<void(double)>& afterStep)
 {
     long long steps = 0;
     while (t < T - 1e-12*std::max(1.0, T))
@@ -658,6 +658,7 @@ void advanceTo(const TimeIntegrator& integrator, MaterialPoints& mp, BackgroundG
         if (boundaryWork) *boundaryWork += stats.boundaryWork;
         t += dt;
         if (!stats.finite) throw std::runtime_error("advanceTo: non-finite particle state");
+        if (afterStep) afterStep(t);
     }
 }
 

@@ -251,7 +251,13 @@ def test_flume(work):
           "slide at the top: no summary.json written")
 
 
-def base_case(work, name, interface, s_uo=None, cfd=None, control=None):
+def add_sites(case, sites):
+    """Appends sceneProperties' sites {name {position s;} ...} (arc lengths along the base [m])."""
+    with open(os.path.join(case, "constant", "sceneProperties"), "a") as f:
+        f.write("sites\n{\n" + "".join("    %s { position %r; }\n" % kv for kv in sites) + "}\n")
+
+
+def base_case(work, name, interface, s_uo=None, cfd=None, control=None, sites=None):
     # The flume's slurry released without its end wall: a weak slide that flows
     # (or, with s_uo 2 kPa, a block whose faces stand: 4 s_uo/(rho g) = 0.76 m > H0).
     scene = {"rearWall": "no"}
@@ -263,6 +269,8 @@ def base_case(work, name, interface, s_uo=None, cfd=None, control=None):
     text = open(p).read()
     i = text.index("interface noSlip;")
     open(p, "w").write(text[:i] + interface + text[i + len("interface noSlip;"):])
+    if sites:
+        add_sites(c, sites)
     prepare(c)
     run_slidefoam(c)
     return c
@@ -374,12 +382,23 @@ def test_base(work):
     # 0.306 m at 0.002 s, 0.312 m at 0.0005 s; validation/cfd/README.md, "The base's traction and
     # the time step").
     rigid = exact*(1 - 1.2/rho) - 0.5*100/(rho*height)*float(t)**2   # the air's buoyancy and s_b taken off
+    # A site 0.1 m ahead of the block's front (1.8 m) sees it arrive at the rigid block's time and run over it
+    # at the rigid block's speed at the end, 0.3 m thick (sites every step: src/output/siteMonitor.H).
     short_step = base_case(work, "base_block_s_b100_dt0.002", "interface frictional;\n    s_b 100;", s_uo=2000,
-                           control={"maxDeltaT": 0.002})
+                           control={"maxDeltaT": 0.002}, sites=[("pipeline", 1.9), ("beyond", 3.0)])
     travel_short = centre_of_mass_travel(short_step, t)
     check(abs(travel_short/rigid - 1) < 0.03,
           "strong block sliding on s_b 100 Pa at maxDeltaT 0.002 s: centre of mass %.3f m in %s s, the rigid block "
           "%.3f m (within 3 %%; at the flume's 0.01 s %.3f m)" % (travel_short, t, rigid, travel_sliding))
+    a_rigid = 2*rigid/float(t)**2
+    site, beyond = summary(short_step)["sites"]
+    arrival = np.sqrt(2*0.1/a_rigid)
+    check(site["arrival_time_s"] is not None and abs(site["arrival_time_s"]/arrival - 1) < 0.02
+          and abs(site["peak_speed_m_s"]/(a_rigid*float(t)) - 1) < 0.02 and abs(site["max_thickness_m"]/0.3 - 1) < 0.02
+          and site["covered_at_end"] and beyond["arrival_time_s"] is None,
+          "a site 0.1 m ahead of the sliding block: arrival %s s, peak speed %s m/s, largest thickness %s m; the rigid "
+          "block %.3f s, %.3f m/s, 0.3 m (within 2 %%; measured +0.0, +0.2, +0.0 %%); one 1.2 m ahead never reached"
+          % (site["arrival_time_s"], site["peak_speed_m_s"], site["max_thickness_m"], arrival, a_rigid*float(t)))
 
     # A mesh too short either way: the slide leaving through an open end stops the run
     # with the cfdDict key to change, and no summary (the runout would be cut short).
@@ -510,6 +529,20 @@ def test_restart(work):
     check([t for t, _ in mr] == [t for t, _ in mf] and sr["mechanism_history"] == sf["mechanism_history"],
           "mechanism.dat and summary.json's mechanism history hold each time once, as the uninterrupted run's: %s"
           % " ".join("%g" % t for t, _ in mr))
+    # The flume's gauges (3 and 5 m from the end wall): the record (arrival, peaks) carried through the restart
+    # from sites.dat's row at 1 s, and the rows up to 1 s kept as written.
+    gf, gr = sf["sites"], sr["sites"]
+    keys = ("arrival_time_s", "peak_speed_m_s", "max_thickness_m", "final_thickness_m")
+    check(len(gf) == len(gr) == 2 and all(
+              (a[k] is None and b[k] is None) or (a[k] is not None and b[k] is not None and abs(a[k] - b[k]) <= 1e-3*max(abs(a[k]), 1e-3))
+              for a, b in zip(gf, gr) for k in keys),
+          "the gauges' records through the restart: uninterrupted %s, restarted %s"
+          % ([(g["name"], g["arrival_time_s"], g["peak_speed_m_s"]) for g in gf],
+             [(g["name"], g["arrival_time_s"], g["peak_speed_m_s"]) for g in gr]))
+    sites_dat = lambda c: open(os.path.join(c, "postProcessing", "slideFoam", "sites.dat")).read().splitlines()
+    first_sites = [l for l in sites_dat(full) if l.startswith("#") or float(l.split()[0]) <= 1.0]
+    check(sites_dat(restarted)[:len(first_sites)] == first_sites and len(sites_dat(restarted)) == len(sites_dat(full)),
+          "sites.dat: the rows to 1 s as the uninterrupted run wrote them, each time once")
     check(abs(sr["volume_relative_change"] - whole) < 1e-9 and dv < 1e-7,
           "volume change from the run's start: restarted %.4e (runout.dat's first and last rows: %.4e; from 1 s: "
           "%.4e), uninterrupted %.4e" % (sr["volume_relative_change"], whole,

@@ -12,12 +12,14 @@
 #include "materialPoints.H"
 #include "mpmControls.H"
 #include "mpmOutput.H"
+#include "siteSampling.H"
 #include "timeIntegrator.H"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <stdexcept>
@@ -231,6 +233,50 @@ TEST(SlideMPM, RigidBlockOnFrictionalSlopeFollowsTheSlidingLaw)
     double x, y, u;
     centreOfMass(mpm::HostPoints(f.points), x, y, u);
     EXPECT_NEAR(u, sc.g*std::sin(5.0*M_PI/180.0), 0.01*sc.g*std::sin(5.0*M_PI/180.0));
+}
+
+TEST(SlideMPM, SiteOnTheSlopeSeesTheSlidingBlockArriveAtTheLawsTime)
+{
+    // The block of the test above and a site 1 m ahead of its front: sampled every
+    // step, the block arrives when its foremost particle centre has slid there under
+    // a = g sin(theta) - s_b/(rho H), covers the site 1 m thick and runs over it at a t.
+    scene::Interface iface;
+    iface.type = scene::Interface::Type::frictional;
+    iface.s_b = 200.0;
+    scene::Scene sc = blockScene(5.0, 8.0, 1.0, 500.0, rigidStrength, iface);
+    sc.sites = {{"pipeline", 9.0}, {"beyond", 40.0}};
+    SceneRun r(sc, controls(8, 2), 100.0*rigidStrength);
+    const mpm::SiteSampler sampler(sc.sites, r.frame, r.grid.d);
+    const std::filesystem::path dir = std::filesystem::temp_directory_path()
+        /("slideMPMSiteTest_" + std::to_string(::getpid()));
+    output::SiteMonitor sites(sc.sites, sc.slide.frontPosition(), dir.string(), "slideMPM", false, 0.0);
+    const double xmax0 = r.stats.xmax;
+    sites.observe(0.0, sampler.sample(r.points, r.stats));
+    mpm::advanceTo(r.integrator, r.points, r.grid, r.t, 3.0, r.stats, nullptr,
+                   [&](double t) { sites.observe(t, sampler.sample(r.points, r.stats)); });
+    const double a = sc.g*std::sin(5.0*M_PI/180.0) - iface.s_b/(sc.slide.density*sc.slide.height);
+    const output::SiteRecord& at = sites.records()[0];
+    EXPECT_NEAR(at.arrival, std::sqrt(2.0*(9.0 - xmax0)/a), 0.03*std::sqrt(2.0*(9.0 - xmax0)/a));
+    // The stiff block rings from its release: the mean velocity lies within 1-2 % of the law
+    // (the test above), the particles over the site within 5 % (measured +4.6 % at 3 s).
+    EXPECT_NEAR(at.peakSpeed, a*3.0, 0.05*a*3.0);
+    EXPECT_NEAR(at.peakSpeedTime, 3.0, 1e-9);
+    EXPECT_NEAR(at.maxThickness, 1.0, 0.01);
+    EXPECT_TRUE(at.now.covered);
+    // The device's reduction is the tent-weighted sum over the particles, as on the host.
+    const mpm::HostPoints hp(r.points);
+    double area = 0.0, mass = 0.0, momentum = 0.0;
+    for (int p = 0; p < hp.count; ++p)
+    {
+        const double w = std::max(0.0, 1.0 - std::fabs(hp.position(p, 0) - 9.0)/r.grid.d);
+        area += w*hp.volume(p);
+        mass += w*hp.mass(p);
+        momentum += w*hp.mass(p)*hp.velocity(p, 0);
+    }
+    EXPECT_NEAR(at.now.thickness, area/r.grid.d, 1e-12);
+    EXPECT_NEAR(at.now.velocity, momentum/mass, 1e-12);
+    EXPECT_TRUE(std::isnan(sites.records()[1].arrival));
+    std::filesystem::remove_all(dir);
 }
 
 namespace

@@ -109,6 +109,48 @@ TEST(SlideDAM, RigidBlockOnFrictionalBaseFollowsTheSlidingLaw)
     }
 }
 
+TEST(SlideDAM, SitesSeeTheSlidingBlockArriveAndLeaveAtTheLawsTimes)
+{
+    // The block above (40 m long, 2 m thick, front at 40 m) and sites 20 m ahead of its
+    // front, inside it and far beyond: under a = g sin(theta) - s_b/(rho H) the front
+    // reaches 60 m at sqrt(2 20/a) = 13.7 s and the rear leaves it at sqrt(2 60/a) =
+    // 23.7 s, at a t, the fastest the block runs over it; the site the block starts on
+    // is covered from the start until the rear passes it.
+    scene::Interface iface;
+    iface.type = scene::Interface::Type::frictional;
+    iface.s_b = 300.0;
+    scene::Scene sc = blockScene(3.0, 1e7, iface);
+    sc.sites = {{"ahead", 60.0}, {"under", 30.0}, {"beyond", 500.0}};
+    const dam::DamControls c = fast();
+    dam::SlideColumns s = dam::SlideColumns::fromScene(sc, c.columns);
+    dam::DamIntegrator integ(sc, c);
+    const std::filesystem::path dir = std::filesystem::temp_directory_path()
+        /("slideDAMSiteTest_" + std::to_string(::getpid()));
+    output::SiteMonitor sites(sc.sites, sc.slide.frontPosition(), dir.string(), "slideDAM", false, 0.0);
+    const double a = sc.g*std::sin(3.0*M_PI/180.0) - iface.s_b/(sc.slide.density*sc.slide.height);
+    double t = 0.0, dtMax = 0.0;
+    sites.observe(t, dam::siteFlow(s, sc.sites));
+    while (t < 25.0)
+    {
+        const double dt = integ.timeStep(s);
+        dtMax = std::max(dtMax, dt);
+        integ.step(s, dt, t);
+        t += dt;
+        sites.observe(t, dam::siteFlow(s, sc.sites));
+    }
+    const output::SiteRecord& ahead = sites.records()[0];
+    EXPECT_NEAR(ahead.arrival, std::sqrt(2.0*20.0/a), dtMax);
+    EXPECT_NEAR(ahead.lastCovered, std::sqrt(2.0*60.0/a), dtMax);
+    EXPECT_NEAR(ahead.peakSpeed, std::sqrt(2.0*a*60.0), a*dtMax);
+    EXPECT_NEAR(ahead.maxThickness, 2.0, 1e-9);
+    EXPECT_FALSE(ahead.now.covered);
+    const output::SiteRecord& under = sites.records()[1];
+    EXPECT_DOUBLE_EQ(under.arrival, 0.0);
+    EXPECT_NEAR(under.lastCovered, std::sqrt(2.0*30.0/a), dtMax);
+    EXPECT_TRUE(std::isnan(sites.records()[2].arrival));
+    std::filesystem::remove_all(dir);
+}
+
 TEST(SlideDAM, HydroplaningBlockApproachesTerminalVelocity)
 {
     // s_b = 0.5 rho_w C_F V^2: V(t) = V_t tanh(g sin(theta) t/V_t), V_t^2 = rho H g sin(theta)/(0.5 rho_w C_F).
