@@ -335,6 +335,13 @@ add("cfd-wall-function-rate-free", "Eq. (1)'s wall function asked of a slide wit
 add("dam-timeScheme-unknown", "a time scheme slideDAM does not have (rk4)", "system/damDict",
     dam0[:-1] + ["timeScheme  rk4;", ""], len(dam0), "timeScheme", "slideDAM")
 
+scene_sub("site-not-a-dictionary", "a site given as a bare position instead of a sub-dictionary",
+          r"^\s*gauge3m\s", "    gauge3m     3;", "sites.gauge3m")
+scene_sub("site-position-word", "a site's position that is not a number",
+          r"^\s*gauge5m\s", "    gauge5m     { position five; }", "sites.gauge5m.position")
+scene_sub("site-unknown-key", "a site with a key no method reads (depth)",
+          r"^\s*gauge5m\s", "    gauge5m     { position 5; depth 1; }", "sites.gauge5m.depth")
+
 
 def main():
     for d in os.listdir(here):
