@@ -5,7 +5,9 @@ crossings): sceneProperties `sites`, recorded every step by each method
 own set-ups on two scenes with sites at several distances ahead of the initial front:
 Table 1 Case 2 (a weak slide whose runout the three methods and the paper agree on
 within 7 %) and the Mediterranean escarpment (a sensitive slab whose runout they do
-not agree on). Writes sites.json, sites.md and sites.png here. ~8 min on 2 cores.
+not agree on). Also times slideMPM on the flagship flume (its `fast` set-up) with its two
+gauges and without sites, three runs each, alternating: the cost of the per-step
+reduction over the particles. Writes sites.json, sites.md and sites.png here. ~9 min on 2 cores.
 
 Usage: validation/sites/sites.py [--stored]
   --stored: redraw sites.md and sites.png from sites.json without running
@@ -74,6 +76,27 @@ def measure():
     return data
 
 
+def measure_overhead(runs=3):
+    """Wall time [s] of slideMPM's flume at its fast set-up with the tutorial's two gauges and with no sites."""
+    work = os.path.join(TOP, "platforms", "validation-work", "sites")
+    walls = {"with": [], "without": []}
+    for k in range(runs):
+        for label in ("with", "without"):
+            case = os.path.join(work, "flume_" + label)
+            if os.path.exists(case):
+                shutil.rmtree(case)
+            copy_scene(os.path.join(TOP, "tutorials", "kroneWrightRun15"), case)
+            if label == "without":
+                with_sites(os.path.join(case, "constant", "sceneProperties"), [])
+                text = open(os.path.join(case, "constant", "sceneProperties")).read()
+                with open(os.path.join(case, "constant", "sceneProperties"), "w") as f:
+                    f.write(text.replace("\nsites\n{\n}\n", "\n"))
+            summary, _ = run_method("slideMPM", case, env={"OMP_NUM_THREADS": "2", "OMP_PROC_BIND": "false"})
+            walls[label].append(summary["wall_time_s"])
+            print("flume slideMPM %s sites: %.2f s" % (label, summary["wall_time_s"]), flush=True)
+    return walls
+
+
 def fmt(v, f="%.2f"):
     return "-" if v is None else f % v
 
@@ -86,7 +109,7 @@ def write_md(data):
              "covered while it lies between the slide's rear and front; its arrival is when the front passes it; "
              "speed is the depth-averaged velocity along the base over the site; thickness is normal to the base. "
              "Each method at its tutorial's set-up; \"-\": never reached.", ""]
-    for e in data:
+    for e in data["cases"]:
         lines += ["## %s (`%s`)" % (e["case"], e["tutorial"]), ""]
         lines.append("Runout: " + ", ".join("%s %.1f m (%s, %.0f s wall)" % (
             m, r["runout"], "at rest" if r["atRest"] else "moving at %g s" % r["end"], r["wall"])
@@ -101,6 +124,16 @@ def write_md(data):
                                                                      for r in e["methods"].values())))
         lines.append("")
     lines += ["![arrival and peak speed against the distance ahead](sites.png)", ""]
+    w = data.get("overhead")
+    if w:
+        lo = lambda v: min(v)
+        lines += ["## What sampling costs slideMPM", "",
+                  "The flume (`tutorials/kroneWrightRun15`, slideMPM's `fast` set-up, 2 threads) with its two gauges "
+                  "and without sites, %d runs each, alternating: %s s with, %s s without; fastest %.2f against "
+                  "%.2f s (%+.1f %%). slideDAM and slideFoam read the sites off columns they have already summed." % (
+                      len(w["with"]), " / ".join("%.2f" % v for v in w["with"]),
+                      " / ".join("%.2f" % v for v in w["without"]), lo(w["with"]), lo(w["without"]),
+                      100*(lo(w["with"])/lo(w["without"]) - 1)), ""]
     with open(os.path.join(HERE, "sites.md"), "w") as f:
         f.write("\n".join(lines))
 
@@ -109,8 +142,9 @@ def plot(data):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(2, len(data), figsize=(5.5*len(data), 7))
-    for c, e in enumerate(data):
+    cases = data["cases"]
+    fig, ax = plt.subplots(2, len(cases), figsize=(5.5*len(cases), 7))
+    for c, e in enumerate(cases):
         for m, r in e["methods"].items():
             d = [x for x, s in zip(e["distances"], r["sites"]) if s["arrival_time_s"] is not None]
             arrival = [s["arrival_time_s"] for s in r["sites"] if s["arrival_time_s"] is not None]
@@ -132,7 +166,7 @@ def main():
     if opts.get("--stored"):
         data = json.load(open(path))
     else:
-        data = measure()
+        data = {"cases": measure(), "overhead": measure_overhead()}
         with open(path, "w") as f:
             json.dump(data, f, indent=1)
     write_md(data)
