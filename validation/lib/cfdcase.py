@@ -46,6 +46,26 @@ def set_method_entries(case, method_dict, entries):
         set_entry(os.path.join(case, "system", method_dict), k, v, add=True)
 
 
+def set_sites(case, sites):
+    """Replaces the scene's `sites` block (if any) by sites {name {position s;} ...} from [(name, s), ...]; no
+    sites: the block removed."""
+    path = os.path.join(case, "constant", "sceneProperties")
+    text = open(path).read()
+    k = text.find("\nsites")
+    if k >= 0:
+        depth, j = 0, text.index("{", k)
+        while True:
+            depth += {"{": 1, "}": -1}.get(text[j], 0)
+            j += 1
+            if depth == 0:
+                break
+        text = text[:k] + text[j:]
+    if sites:
+        text = text.rstrip("\n") + "\n\nsites\n{\n" + "".join("    %s { position %.10g; }\n" % kv for kv in sites) + "}\n"
+    with open(path, "w") as f:
+        f.write(text)
+
+
 def copy_scene(template, dest):
     """A copy of a case holding its scene only: RunFunctions' cleanCase removes what runs left in the copy (time
     directories with slideFoam's fields and the DAM/MPM states, logs, postProcessing, slideFoamCase's files)."""

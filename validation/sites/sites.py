@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(TOP, "validation", "lib"))
 import options  # noqa: E402
-from cfdcase import copy_scene  # noqa: E402
+from cfdcase import copy_scene, set_sites  # noqa: E402
 from runner import run_method, slidefoam_env  # noqa: E402
 from slidefoam_io import read_summary  # noqa: E402
 
@@ -31,23 +31,6 @@ from slidefoam_io import read_summary  # noqa: E402
 CASES = [("Table 1 Case 2", "tutorials/table1/case02", 40.0, [5, 10, 20, 30, 40, 50]),
          ("Mediterranean escarpment", "tutorials/mediterraneanEscarpment", 58.476, [40, 100, 200, 300, 450])]
 METHODS = [("slideDAM", "DAM"), ("slideMPM", "MPM"), ("slideFoam", "CFD")]
-
-
-def with_sites(scene_path, positions):
-    """The scene with its `sites` block (if any) replaced by sites at the given arc lengths."""
-    text = open(scene_path).read()
-    k = text.find("\nsites")
-    if k >= 0:
-        depth, j = 0, text.index("{", k)
-        while True:
-            depth += {"{": 1, "}": -1}.get(text[j], 0)
-            j += 1
-            if depth == 0:
-                break
-        text = text[:k] + text[j:]
-    text += "\nsites\n{\n" + "".join("    d%g { position %.6g; }\n" % (d, s) for d, s in positions) + "}\n"
-    with open(scene_path, "w") as f:
-        f.write(text)
 
 
 def measure():
@@ -58,7 +41,7 @@ def measure():
         if os.path.exists(case):
             shutil.rmtree(case)
         copy_scene(os.path.join(TOP, tutorial), case)
-        with_sites(os.path.join(case, "constant", "sceneProperties"), [(d, front + d) for d in distances])
+        set_sites(case, [("d%g" % d, front + d) for d in distances])
         entry = {"case": name, "tutorial": tutorial, "distances": distances, "methods": {}}
         for app, short in METHODS:
             t0 = time.time()
@@ -87,10 +70,7 @@ def measure_overhead(runs=3):
                 shutil.rmtree(case)
             copy_scene(os.path.join(TOP, "tutorials", "kroneWrightRun15"), case)
             if label == "without":
-                with_sites(os.path.join(case, "constant", "sceneProperties"), [])
-                text = open(os.path.join(case, "constant", "sceneProperties")).read()
-                with open(os.path.join(case, "constant", "sceneProperties"), "w") as f:
-                    f.write(text.replace("\nsites\n{\n}\n", "\n"))
+                set_sites(case, [])
             summary, _ = run_method("slideMPM", case, env={"OMP_NUM_THREADS": "2", "OMP_PROC_BIND": "false"})
             walls[label].append(summary["wall_time_s"])
             print("flume slideMPM %s sites: %.2f s" % (label, summary["wall_time_s"]), flush=True)

@@ -68,7 +68,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, read_field, set_entry, time_dirs  # noqa: E402
+from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, read_field, set_entry, set_sites, time_dirs  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
 
@@ -251,12 +251,6 @@ def test_flume(work):
           "slide at the top: no summary.json written")
 
 
-def add_sites(case, sites):
-    """Appends sceneProperties' sites {name {position s;} ...} (arc lengths along the base [m])."""
-    with open(os.path.join(case, "constant", "sceneProperties"), "a") as f:
-        f.write("sites\n{\n" + "".join("    %s { position %r; }\n" % kv for kv in sites) + "}\n")
-
-
 def base_case(work, name, interface, s_uo=None, cfd=None, control=None, sites=None):
     # The flume's slurry released without its end wall: a weak slide that flows
     # (or, with s_uo 2 kPa, a block whose faces stand: 4 s_uo/(rho g) = 0.76 m > H0).
@@ -270,7 +264,7 @@ def base_case(work, name, interface, s_uo=None, cfd=None, control=None, sites=No
     i = text.index("interface noSlip;")
     open(p, "w").write(text[:i] + interface + text[i + len("interface noSlip;"):])
     if sites:
-        add_sites(c, sites)
+        set_sites(c, sites)
     prepare(c)
     run_slidefoam(c)
     return c
