@@ -7,7 +7,8 @@
 //   slideMPM [-case dir] [-setting reference|fast]
 //
 // Reads constant/sceneProperties, system/controlDict and system/mpmDict;
-// writes postProcessing/slideMPM/{runout.dat, summary.json, particles.pvd}.
+// writes postProcessing/slideMPM/{runout.dat, summary.json, particles.pvd} and, with
+// sites in the scene, sites.dat (sampled every step: siteSampling.H).
 #include "application.H"
 #include "backgroundGrid.H"
 #include "baseFrame.H"

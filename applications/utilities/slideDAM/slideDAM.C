@@ -6,7 +6,8 @@
 //   slideDAM [-case dir] [-setting reference|fast]
 //
 // Reads constant/sceneProperties, system/controlDict and system/damDict;
-// writes postProcessing/slideDAM/{runout.dat, summary.json, profile.pvd}.
+// writes postProcessing/slideDAM/{runout.dat, summary.json, profile.pvd} and, with
+// sites in the scene, sites.dat.
 #include "application.H"
 #include "damControls.H"
 #include "damIntegrator.H"
