@@ -17,7 +17,7 @@ namespace output
 namespace
 {
 
-constexpr int valuesPerSite = 11;
+constexpr int valuesPerSite = 13;
 const double notYet = std::numeric_limits<double>::quiet_NaN();
 
 // The line that says which sites a sites.dat holds: a restart checks it.
@@ -34,7 +34,8 @@ std::string header(const std::vector<scene::Site>& sites)
     std::ostringstream os;
     os << sitesLine(sites) << '\n'
        << "# time [s], then per site: covered (0/1)  thickness [m]  velocity [m/s]  arrival [s]  peakSpeed [m/s]"
-          "  peakSpeedTime [s]  thicknessAtPeakSpeed [m]  maxThickness [m]  maxThicknessTime [s]  lastCovered [s]"
+          "  peakSpeedTime [s]  thicknessAtPeakSpeed [m]  peakMomentumFlux hV^2 [m3/s2]  peakMomentumFluxTime [s]"
+          "  maxThickness [m]  maxThicknessTime [s]  lastCovered [s]"
           "  recordedFrom [s]  (nan: not yet)\n";
     return os.str();
 }
@@ -54,6 +55,8 @@ SiteRecord::SiteRecord()
     peakSpeed(notYet),
     peakSpeedTime(notYet),
     thicknessAtPeakSpeed(notYet),
+    peakMomentumFlux(notYet),
+    peakMomentumFluxTime(notYet),
     maxThickness(notYet),
     maxThicknessTime(notYet),
     lastCovered(notYet)
@@ -95,10 +98,12 @@ std::vector<SiteRecord> readSiteRecords(const std::string& path, const std::vect
             r.peakSpeed = x[4];
             r.peakSpeedTime = x[5];
             r.thicknessAtPeakSpeed = x[6];
-            r.maxThickness = x[7];
-            r.maxThicknessTime = x[8];
-            r.lastCovered = x[9];
-            r.recordedFrom = x[10];
+            r.peakMomentumFlux = x[7];
+            r.peakMomentumFluxTime = x[8];
+            r.maxThickness = x[9];
+            r.maxThicknessTime = x[10];
+            r.lastCovered = x[11];
+            r.recordedFrom = x[12];
         }
         last = row;
     }
@@ -146,6 +151,12 @@ void SiteMonitor::observe(const double time, const std::vector<SiteFlow>& flow)
             r.peakSpeedTime = time;
             r.thicknessAtPeakSpeed = r.now.thickness;
         }
+        const double flux = r.now.thickness*r.now.velocity*r.now.velocity;
+        if (std::isnan(r.peakMomentumFlux) || flux > r.peakMomentumFlux)
+        {
+            r.peakMomentumFlux = flux;
+            r.peakMomentumFluxTime = time;
+        }
         if (std::isnan(r.maxThickness) || r.now.thickness > r.maxThickness)
         {
             r.maxThickness = r.now.thickness;
@@ -165,7 +176,8 @@ void SiteMonitor::write(const double time)
     {
         os_ << ' ' << (r.now.covered ? 1 : 0);
         for (double v : {r.now.thickness, r.now.velocity, r.arrival, r.peakSpeed, r.peakSpeedTime,
-                         r.thicknessAtPeakSpeed, r.maxThickness, r.maxThicknessTime, r.lastCovered, r.recordedFrom})
+                         r.thicknessAtPeakSpeed, r.peakMomentumFlux, r.peakMomentumFluxTime, r.maxThickness,
+                         r.maxThicknessTime, r.lastCovered, r.recordedFrom})
         {
             putNumber(os_, v);
         }
@@ -189,6 +201,8 @@ std::string SiteMonitor::json() const
            << ", \"peak_speed_m_s\": " << jsonNumber(r.peakSpeed)
            << ", \"peak_speed_time_s\": " << jsonNumber(r.peakSpeedTime)
            << ", \"thickness_at_peak_speed_m\": " << jsonNumber(r.thicknessAtPeakSpeed)
+           << ", \"peak_momentum_flux_m3_s2\": " << jsonNumber(r.peakMomentumFlux)
+           << ", \"peak_momentum_flux_time_s\": " << jsonNumber(r.peakMomentumFluxTime)
            << ", \"max_thickness_m\": " << jsonNumber(r.maxThickness)
            << ", \"max_thickness_time_s\": " << jsonNumber(r.maxThicknessTime)
            << ", \"last_covered_s\": " << jsonNumber(r.lastCovered)

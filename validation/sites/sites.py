@@ -98,12 +98,13 @@ def write_md(data):
                   "|---|---|" + "---|"*len(e["methods"])]
         for k, d in enumerate(e["distances"]):
             for key, label, f in [("arrival_time_s", "arrival [s]", "%.2f"), ("peak_speed_m_s", "peak speed [m/s]", "%.2f"),
+                                  ("peak_momentum_flux_m3_s2", "peak h V^2 [m3/s2]", "%.3g"),
                                   ("max_thickness_m", "largest thickness [m]", "%.2f"),
                                   ("final_thickness_m", "final thickness [m]", "%.2f")]:
-                lines.append("| %g | %s | %s |" % (d, label, " | ".join(fmt(r["sites"][k][key], f)
+                lines.append("| %g | %s | %s |" % (d, label, " | ".join(fmt(r["sites"][k].get(key), f)
                                                                      for r in e["methods"].values())))
         lines.append("")
-    lines += ["![arrival and peak speed against the distance ahead](sites.png)", ""]
+    lines += ["![arrival, peak speed and peak h V^2 against the distance ahead](sites.png)", ""]
     w = data.get("overhead")
     if w:
         lo = lambda v: min(v)
@@ -123,16 +124,19 @@ def plot(data):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     cases = data["cases"]
-    fig, ax = plt.subplots(2, len(cases), figsize=(5.5*len(cases), 7))
+    fig, ax = plt.subplots(3, len(cases), figsize=(5.5*len(cases), 10))
+    rows = [("arrival_time_s", "arrival [s]"), ("peak_speed_m_s", "peak speed over the site [m/s]"),
+            ("peak_momentum_flux_m3_s2", "peak h V$^2$ over the site [m$^3$/s$^2$]")]
     for c, e in enumerate(cases):
         for m, r in e["methods"].items():
-            d = [x for x, s in zip(e["distances"], r["sites"]) if s["arrival_time_s"] is not None]
-            arrival = [s["arrival_time_s"] for s in r["sites"] if s["arrival_time_s"] is not None]
-            speed = [s["peak_speed_m_s"] for s in r["sites"] if s["arrival_time_s"] is not None]
-            ax[0][c].plot(d, arrival, "o-", label="%s (runout %.0f m)" % (m, r["runout"]))
-            ax[1][c].plot(d, speed, "o-", label=m)
-        ax[0][c].set(title=e["case"], ylabel="arrival [s]")
-        ax[1][c].set(xlabel="site ahead of the initial front [m]", ylabel="peak speed over the site [m/s]")
+            reached = [(x, s) for x, s in zip(e["distances"], r["sites"]) if s["arrival_time_s"] is not None]
+            for k, (key, _) in enumerate(rows):
+                ax[k][c].plot([x for x, _ in reached], [s.get(key) for _, s in reached], "o-",
+                              label="%s (runout %.0f m)" % (m, r["runout"]) if k == 0 else m)
+        ax[0][c].set(title=e["case"])
+        for k, (_, label) in enumerate(rows):
+            ax[k][c].set(ylabel=label)
+        ax[-1][c].set(xlabel="site ahead of the initial front [m]")
         for a in ax[:, c]:
             a.grid(alpha=0.3)
             a.legend(fontsize=8)

@@ -288,6 +288,10 @@ TEST(SiteMonitor, RecordsArrivalPeakAndPassageAndRestoresThemAtARestart)
         EXPECT_DOUBLE_EQ(r[0].lastCovered, 3.0);
         EXPECT_NEAR(r[0].maxThickness, 1.4, 1e-12);
         EXPECT_DOUBLE_EQ(r[0].maxThicknessTime, 3.0);
+        // h V^2 grows with the thickness while the speed holds, 1.35 m x (2 m/s)^2 at 2.75 s, and falls as the
+        // slide slows at 3 s, where the thickness peaks.
+        EXPECT_NEAR(r[0].peakMomentumFlux, 5.4, 1e-12);
+        EXPECT_DOUBLE_EQ(r[0].peakMomentumFluxTime, 2.75);
         EXPECT_FALSE(r[0].now.covered);
         EXPECT_TRUE(r[1].now.covered);
         EXPECT_TRUE(std::isnan(r[2].arrival));

@@ -263,6 +263,9 @@ TEST(SlideMPM, SiteOnTheSlopeSeesTheSlidingBlockArriveAtTheLawsTime)
     EXPECT_NEAR(at.peakSpeedTime, 3.0, 1e-9);
     EXPECT_NEAR(at.maxThickness, 1.0, 0.01);
     EXPECT_TRUE(at.now.covered);
+    // h V^2 at its largest at the end, where the block runs fastest over the site.
+    EXPECT_NEAR(at.peakMomentumFlux, at.now.thickness*at.now.velocity*at.now.velocity,
+                0.02*at.now.thickness*at.now.velocity*at.now.velocity);
     // The device's reduction is the tent-weighted sum over the particles, as on the host.
     const mpm::HostPoints hp(r.points);
     double area = 0.0, mass = 0.0, momentum = 0.0;

@@ -143,6 +143,8 @@ TEST(SlideDAM, SitesSeeTheSlidingBlockArriveAndLeaveAtTheLawsTimes)
     EXPECT_NEAR(ahead.lastCovered, std::sqrt(2.0*60.0/a), dtMax);
     EXPECT_NEAR(ahead.peakSpeed, std::sqrt(2.0*a*60.0), a*dtMax);
     EXPECT_NEAR(ahead.maxThickness, 2.0, 1e-9);
+    // h V^2 at its largest as the rear leaves: 2 m x 2 a 60 m.
+    EXPECT_NEAR(ahead.peakMomentumFlux, 2.0*2.0*a*60.0, 2.0*2.0*std::sqrt(2.0*a*60.0)*a*dtMax);
     EXPECT_FALSE(ahead.now.covered);
     const output::SiteRecord& under = sites.records()[1];
     EXPECT_DOUBLE_EQ(under.arrival, 0.0);
