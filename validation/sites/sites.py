@@ -87,7 +87,9 @@ def write_md(data):
              "`constant/sceneProperties` (`sites { name { position s; } }`), recorded every step by each method "
              "(`postProcessing/<method>/sites.dat`, `summary.json` \"sites\"; `src/output/siteMonitor.H`). A site is "
              "covered while it lies between the slide's rear and front; its arrival is when the front passes it; "
-             "speed is the depth-averaged velocity along the base over the site; thickness is normal to the base. "
+             "speed is the depth-averaged velocity along the base over the site; thickness is normal to the base; "
+             "h V^2 is the depth-integrated momentum flux per unit density, what a drag load on a submerged crossing "
+             "goes with. "
              "Each method at its tutorial's set-up; \"-\": never reached.", ""]
     for e in data["cases"]:
         lines += ["## %s (`%s`)" % (e["case"], e["tutorial"]), ""]
