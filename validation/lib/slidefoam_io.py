@@ -1,6 +1,7 @@
 """Readers for SlideFoam's output contract: runout.dat, summary.json and the
 VTK XML PolyData (.vtp, appended raw binary) written by slideDAM and slideMPM."""
 import json
+import os
 import re
 import struct
 
@@ -24,6 +25,29 @@ def unresolved(row):
 def base_cells(row):
     """n of the H0/n cells on the base of a slideFoam run (validation/cfd/table1.json's row)."""
     return row["cells"]*(row.get("refinement") or 1)
+
+
+# The log each method's failure would be in, in the order its Allrun runs them.
+LOGS = {"slideDAM": ["log.slideDAM"], "slideMPM": ["log.slideMPM"],
+        "slideFoam": ["log.slideFoamCase", "log.blockMesh", "log.decomposePar", "log.slideFoam", "log.reconstructPar"]}
+
+
+def failure_reason(case, method):
+    """The first error line of the method's logs in a case, or None where it did not run at all."""
+    ran = False
+    for log in LOGS[method]:
+        path = os.path.join(case, log)
+        if not os.path.isfile(path):
+            continue
+        ran = True
+        lines = open(path, errors="replace").read().splitlines()
+        for i, line in enumerate(lines):
+            low = line.lower()
+            # Not OpenFOAM's "time step continuity errors" lines: only what stops a run.
+            if "fatal" in low or "blow-up" in low or "error:" in low or "failed" in low:
+                detail = " ".join(l.strip() for l in lines[i:i + 3] if l.strip())
+                return "%s: %s" % (log, detail[:400])
+    return "ran, but wrote no summary.json (stopped before the end?)" if ran else None
 
 
 def read_summary(path):
@@ -75,7 +99,6 @@ def read_vtp(path):
 
 def read_pvd(path):
     """[(time, vtp path)] of a .pvd collection."""
-    import os
     base = os.path.dirname(path)
     with open(path) as f:
         text = f.read()
@@ -87,7 +110,6 @@ def particles_on_planar_base(case, t, theta_deg):
     theta_deg: (distance along the base downslope, height above the base line through the origin, velocity along
     the base, the particle arrays)."""
     import math
-    import os
     frames = read_pvd(os.path.join(case, "postProcessing", "slideMPM", "particles.pvd"))
     pts, arr = read_vtp(min(frames, key=lambda f: abs(f[0] - t))[1])
     c, s = math.cos(math.radians(theta_deg)), math.sin(math.radians(theta_deg))
