@@ -83,6 +83,9 @@ def main():
     check(corr < -0.9, "the runout falls with s_b (rank correlation %.2f)" % corr)
     check(all(os.path.isfile(os.path.join(out, f)) for f in ("sweep.md", "sweep.csv", "sweep.png")),
           "sweep.md, sweep.csv and sweep.png written")
+    md = open(os.path.join(out, "sweep.md")).read()
+    check("- %d of %d runs, e.g. run 1: s_uo 1e+07 Pa, S_t 1 lies where slideDAM's runout differed" % (n, n) in md,
+          "the applicability warning every run gave is reported once, for all %d runs" % n)
     with open(os.path.join(out, "sweep.csv")) as f:
         check(len(f.read().splitlines()) == n + 1, "sweep.csv: a header and a row per run")
 
@@ -95,6 +98,16 @@ def main():
     os.remove(os.path.join(out, "sweep.md"))
     p = subprocess.run([sys.executable, SWEEP, "-dir", out, "-report"], stdout=subprocess.PIPE)
     check(p.returncode == 0 and open(os.path.join(out, "sweep.md")).read() == md, "-report rewrites the same report")
+
+    # Sites moved by the sweep: their place "varies", their statistics over the runs.
+    out = os.path.join(work, "movedSite")
+    rc, stdout, stderr = sweep("-dir", out, "-vary", "sites/tenMetres/position", "50", "60")
+    with open(os.path.join(out, "sweep.json")) as f:
+        moved = json.load(f)["statistics"]["sites"]
+    check(rc == 0 and moved[2]["position_m"] is None and moved[0]["position_m"] == 42
+          and "| tenMetres | varies | varies | 1 of 2 |" in open(os.path.join(out, "sweep.md")).read(),
+          "a swept site position is reported as varying (reached at 10 m, not at 20 m: the law's %.2f m at s_b 300 Pa),"
+          " the others at their place" % law(300.0))
 
     # A grid.
     out = os.path.join(work, "grid")
