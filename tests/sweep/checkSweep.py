@@ -8,7 +8,7 @@ x(T) = 0.5 a T^2 by the end time T with a = g sin(theta) - s_b/(rho' H) where a 
   sample's distribution of s_b is within 1/20 of the true one everywhere); the median runout is the law's within
   the runout across one stratum; the runout falls with s_b (rank correlation below -0.9).
 - The same command again reuses every run; -report rewrites the same report from them.
-- A grid of s_b x angle: four runs, each the law's.
+- A grid of s_b x angle, each run's end time set to 5 s by -set: four runs, each the law's.
 - Bad options and a key the scene lacks: exit 1, the file and key named, nothing written; a value the scene
   refuses: that run failed with the scene's reason in sweep.md, the others reported, exit 1.
 """
@@ -33,9 +33,9 @@ def check(ok, what):
         failures.append(what)
 
 
-def law(s_b, angle=3.0):
+def law(s_b, angle=3.0, end=T):
     a = G*math.sin(math.radians(angle)) - s_b/(RHO*H)
-    return max(0.0, 0.5*a*T*T)
+    return max(0.0, 0.5*a*end*end)
 
 
 def sweep(*args):
@@ -109,23 +109,27 @@ def main():
           "a swept site position is reported as varying (reached at 10 m, not at 20 m: the law's %.2f m at s_b 300 Pa),"
           " the others at their place" % law(300.0))
 
-    # A grid.
+    # A grid, run to 5 s (-set, in every run).
     out = os.path.join(work, "grid")
-    rc, stdout, stderr = sweep("-dir", out, "-vary", "base/s_b", "100", "300", "-vary", "base/angle", "3", "5")
+    rc, stdout, stderr = sweep("-dir", out, "-vary", "base/s_b", "100", "300", "-vary", "base/angle", "3", "5",
+                               "-set", "system/controlDict:endTime", "5")
     check(rc == 0, "the grid ran (exit %d) %s" % (rc, stderr.strip()[-500:]))
     with open(os.path.join(out, "sweep.json")) as f:
         runs = json.load(f)["runs"]
     combos = sorted((r["values"]["base/s_b"], r["values"]["base/angle"]) for r in runs)
     check(combos == [("100", "3"), ("100", "5"), ("300", "3"), ("300", "5")], "the grid's four combinations")
-    worst = max(abs(r["runout_m"] - law(float(r["values"]["base/s_b"]), float(r["values"]["base/angle"])))
+    worst = max(abs(r["runout_m"] - law(float(r["values"]["base/s_b"]), float(r["values"]["base/angle"]), 5.0))
                 for r in runs)
-    check(worst < 1e-3, "every grid runout the law's within 1 mm (worst %.2e m)" % worst)
+    check(worst < 1e-3 and all(r["end_time_s"] == 5.0 for r in runs),
+          "every grid run ended at the -set 5 s, its runout the law's within 1 mm (worst %.2e m)" % worst)
 
     # Refusals: nothing written.
     for args, words in [
         (["-vary", "rheology/nope", "1", "2"], ["constant/sceneProperties", "rheology/nope"]),
         (["-vary", "slide", "1"], ["constant/sceneProperties", "'slide' is a dictionary"]),
-        (["-vary", "system/damDict:nope", "1"], ["system/damDict", "nope"]),
+        (["-vary", "base/s_b", "1", "-set", "system/nope:columns", "10"], ["system/nope", "no such file"]),
+        (["-vary", "base/s_b", "1", "-set", "base/s_b", "10"], ["a key is given twice"]),
+        (["-vary", "base/s_b", "1", "-set", "base/angle"], ["-set takes a key and one value"]),
         (["-sample", "base/s_b", "uniform", "700", "200", "-samples", "5"], ["-sample base/s_b uniform", "LO"]),
         (["-sample", "base/s_b", "gamma", "1", "2", "-samples", "5"], ["-sample takes", "uniform"]),
         (["-sample", "base/s_b", "uniform", "1", "2"], ["-samples N"]),
@@ -153,6 +157,13 @@ def main():
     check(rc == 1 and "| 1 | -5 | failed: log.slideDAM:" in md and "s_b" in md.split("| 1 | -5 |")[1].split("\n")[0]
           and "| 2 | 300 | %.1f |" % law(300.0) in md,
           "s_b -5: that run failed naming s_b, the other reported, exit %d" % rc)
+
+    # A method dictionary's missing key is added, and the method refuses a misspelt one by name.
+    out = os.path.join(work, "misspelt")
+    rc, stdout, stderr = sweep("-dir", out, "-vary", "base/s_b", "300", "-set", "system/damDict:colums", "10")
+    md = open(os.path.join(out, "sweep.md")).read() if os.path.isfile(os.path.join(out, "sweep.md")) else ""
+    check(rc == 1 and "key 'colums': unknown key" in md, "a misspelt damDict key added by -set: the run refused "
+          "naming it, exit %d" % rc)
 
     if failures:
         print("\n%d checks FAILED" % len(failures))
