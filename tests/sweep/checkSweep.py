@@ -8,6 +8,7 @@ x(T) = 0.5 a T^2 by the end time T with a = g sin(theta) - s_b/(rho' H) where a 
   sample's distribution of s_b is within 1/20 of the true one everywhere); the median runout is the law's within
   the runout across one stratum; the runout falls with s_b (rank correlation below -0.9).
 - The same command again reuses every run; -report rewrites the same report from them.
+- The distributions' quantiles against their closed forms.
 - A grid of s_b x angle, each run's end time set to 5 s by -set: four runs, each the law's.
 - Bad options and a key the scene lacks: exit 1, the file and key named, nothing written; a value the scene
   refuses: that run failed with the scene's reason in sweep.md, the others reported, exit 1.
@@ -44,7 +45,31 @@ def sweep(*args):
     return p.returncode, p.stdout.decode(), p.stderr.decode()
 
 
+def check_distributions():
+    """slideSweep's quantiles against closed forms: the lognormal's median m/sqrt(1 + COV^2) and its mean, the
+    normal's mean + SD at Phi(1), the triangular's at its mode and halfway into each side's area."""
+    import importlib.machinery
+    import importlib.util
+    loader = importlib.machinery.SourceFileLoader("slideSweep", SWEEP)
+    spec = importlib.util.spec_from_loader("slideSweep", loader)
+    mod = importlib.util.module_from_spec(spec)
+    loader.exec_module(mod)
+    q = mod.quantile
+    m, v = 15000.0, 0.3
+    check(abs(q("lognormal", [m, v], 0.5) - m/math.sqrt(1 + v*v)) < 1e-6*m, "lognormal median m/sqrt(1 + COV^2)")
+    k = 20000
+    mean = sum(q("lognormal", [m, v], (i + 0.5)/k) for i in range(k))/k
+    check(abs(mean - m) < 2e-3*m, "lognormal mean %.1f from its quantiles, %g given" % (mean, m))
+    check(abs(q("normal", [10.0, 2.0], 0.8413447460685429) - 12.0) < 1e-9, "normal: mean + SD at Phi(1)")
+    check(abs(q("triangular", [0.0, 1.0, 3.0], 1.0/3.0) - 1.0) < 1e-12, "triangular: the mode at F = (c-a)/(b-a)")
+    check(abs(q("triangular", [0.0, 1.0, 3.0], 1.0/6.0) - math.sqrt(0.5)) < 1e-12
+          and abs(q("triangular", [0.0, 1.0, 3.0], 2.0/3.0) - (3.0 - math.sqrt(2.0))) < 1e-12,
+          "triangular: sqrt(F (b-a)(c-a)) below the mode, b - sqrt((1-F)(b-a)(b-c)) above")
+    check(q("uniform", [2.0, 4.0], 0.25) == 2.5, "uniform: LO + F (HI - LO)")
+
+
 def main():
+    check_distributions()
     work = os.path.abspath(sys.argv[1])
     if os.path.exists(work):
         shutil.rmtree(work)
