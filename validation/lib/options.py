@@ -26,15 +26,15 @@ def parse(doc, flags=(), valued=()):
     return given
 
 
-def measured_or_stored(doc, path, measure):
-    """The data of a study that takes --fine and --stored: with --stored the JSON at path, otherwise measure(fine),
-    written to path first."""
+def measured_or_stored(doc, path, measure, fine=True):
+    """The data of a study that takes --stored (and --fine where fine): with --stored the JSON at path, otherwise
+    measure(fine) (measure() where the study has no --fine), written to path first."""
     import json
-    args = parse(doc, flags=("--fine", "--stored"))
+    args = parse(doc, flags=("--fine", "--stored") if fine else ("--stored",))
     if args.get("--stored"):
         with open(path) as f:
             return json.load(f)
-    data = measure(args.get("--fine", False))
+    data = measure(args.get("--fine", False)) if fine else measure()
     with open(path, "w") as f:
         json.dump(data, f, indent=1)
     return data

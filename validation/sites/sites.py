@@ -12,7 +12,6 @@ reduction over the particles. Writes sites.json, sites.md and sites.png here. ~9
 Usage: validation/sites/sites.py [--stored]
   --stored: redraw sites.md and sites.png from sites.json without running
 """
-import json
 import os
 import shutil
 import subprocess
@@ -147,14 +146,8 @@ def plot(data):
 
 
 def main():
-    opts = options.parse(__doc__, flags=("--stored",))
-    path = os.path.join(HERE, "sites.json")
-    if opts.get("--stored"):
-        data = json.load(open(path))
-    else:
-        data = {"cases": measure(), "overhead": measure_overhead()}
-        with open(path, "w") as f:
-            json.dump(data, f, indent=1)
+    data = options.measured_or_stored(__doc__, os.path.join(HERE, "sites.json"),
+                                      lambda: {"cases": measure(), "overhead": measure_overhead()}, fine=False)
     write_md(data)
     plot(data)
     print(open(os.path.join(HERE, "sites.md")).read())

@@ -163,16 +163,7 @@ def write(data):
 
 
 def main():
-    opts = options.parse(__doc__, flags=("--stored",))
-    path = os.path.join(HERE, "sweep.json")
-    if opts.get("--stored"):
-        with open(path) as f:
-            data = json.load(f)
-    else:
-        data = measure()
-        with open(path, "w") as f:
-            json.dump(data, f, indent=1)
-    write(data)
+    write(options.measured_or_stored(__doc__, os.path.join(HERE, "sweep.json"), measure, fine=False))
     print("Written: %s" % os.path.join(HERE, "sweep.md"))
     return 0
 
