@@ -155,6 +155,8 @@ def main():
         (["-vary", "base/s_b", "1", "-set", "system/nope:columns", "10"], ["system/nope", "no such file"]),
         (["-vary", "base/s_b", "1", "-set", "base/s_b", "10"], ["a key is given twice"]),
         (["-vary", "base/s_b", "1", "-set", "base/angle"], ["-set takes a key and one value"]),
+        (["-vary", "base/s_b", "1", "-set", "system/damDict:columns/x", "3"],
+         ["system/damDict", "could not set 'columns/x'"]),
         (["-sample", "base/s_b", "uniform", "700", "200", "-samples", "5"], ["-sample base/s_b uniform", "LO"]),
         (["-sample", "base/s_b", "gamma", "1", "2", "-samples", "5"], ["-sample takes", "uniform"]),
         (["-sample", "base/s_b", "uniform", "1", "2"], ["-samples N"]),
