@@ -8,7 +8,8 @@ sampling reference:
   500 Pa, COV 0.25; slope uniform 3.43 +- 0.5 deg; sites 40 and 60 m ahead of the initial front.
 - The Mediterranean escarpment (the sensitive slab the methods do not agree on): s_uo lognormal, mean 15 kPa,
   COV 0.3 (the field samples' strength with a spread of the order site investigations report); 1/S_t
-  uniform from 1/60 to 1/20 (S_t 40 measured); the tutorial's pipeline and cable (hypothetical).
+  uniform from 1/60 to 1/20 (S_t 40 measured); the tutorial's pipeline and cable (hypothetical). And slideDAM
+  over a grid of s_uo from 15 to 40 kPa: the strength from which its slab stands.
 
 slideMPM at the tutorials' fast set-ups, without field output, one run at a time on 2 threads. Writes sweep.json,
 sweep.md and sweep.png here. ~40 min on 2 cores.
@@ -36,7 +37,7 @@ CASES = [
      "n": 24, "nReference": 256},
     {"name": "Mediterranean escarpment", "tutorial": "tutorials/mediterraneanEscarpment", "sites": None,
      "samples": [("rheology/s_uo", "lognormal", 15000, 0.3), ("rheology/deltaRem", "uniform", 0.0167, 0.05)],
-     "n": 20, "nReference": 512},
+     "n": 20, "nReference": 512, "standGrid": list(range(15000, 40001, 1000))},
 ]
 SEED = 1
 
@@ -57,6 +58,15 @@ def sweep(case, out, method, n, samples):
                       "sites": [s["arrival_time_s"] for s in r.get("sites", [])]} for r in result["runs"]]}
 
 
+def stand_grid(case, values):
+    """[[s_uo, runout], ...] of slideDAM over a grid of s_uo: where its slide stops moving at all."""
+    out = os.path.join(case, "sweepDAMstand")
+    subprocess.run([os.path.join(TOP, "bin", "slideSweep"), "-case", case, "-dir", out, "-vary", "rheology/s_uo"]
+                   + ["%g" % v for v in values], env=slidefoam_env())
+    with open(os.path.join(out, "sweep.json")) as f:
+        return [[float(r["values"]["rheology/s_uo"]), r.get("runout_m")] for r in json.load(f)["runs"]]
+
+
 def measure():
     work = os.path.join(TOP, "platforms", "validation-work", "sweep")
     data = []
@@ -73,6 +83,8 @@ def measure():
             entry[label] = sweep(case, os.path.join(case, "sweep" + label.replace(" ", "")), method, n,
                                  spec["samples"])
             print("%s, %s over %d scenes: %.0f s" % (spec["name"], label, n, entry[label]["wall"]), flush=True)
+        if spec.get("standGrid"):
+            entry["standGrid"] = stand_grid(case, spec["standGrid"])
         data.append(entry)
     return data
 
@@ -81,14 +93,22 @@ def fmt(v, f="%.1f"):
     return "-" if v is None else f % v
 
 
+MOVED = 1.0   # [m]: a front that travelled less stood; its slide did not fail
+
+
 def paired(entry):
-    """DAM / MPM runout ratios of the scenes both ran (the same values, one seed)."""
-    ratios = []
+    """DAM / MPM runout ratios of the scenes both ran (the same values, one seed) where both slides moved, and
+    the scenes where only one of them did: ([ratios], {method: [s_uo of the scenes where it alone stood]})."""
+    ratios, stood = [], {"DAM": [], "MPM": []}
     for d, m in zip(entry["DAM"]["runs"], entry["MPM"]["runs"]):
         assert d["values"] == m["values"]
-        if d["runout"] is not None and m["runout"] is not None and m["runout"] > 0:
+        if d["runout"] is None or m["runout"] is None:
+            continue
+        if d["runout"] >= MOVED and m["runout"] >= MOVED:
             ratios.append(d["runout"]/m["runout"])
-    return sorted(ratios)
+        elif d["runout"] >= MOVED or m["runout"] >= MOVED:
+            stood["MPM" if d["runout"] >= MOVED else "DAM"].append(float(d["values"]["rheology/s_uo"]))
+    return sorted(ratios), stood
 
 
 def write(data):
@@ -123,11 +143,32 @@ def write(data):
             lines.append("| rank correlation of the runout with `%s` | " % key + " | ".join(
                 fmt(st[k]["rank_correlation_with_runout"].get(key), "%+.2f") for k in labels) + " |")
         lines.append("| wall time of the sweep [s] | " + " | ".join("%.0f" % entry[k]["wall"] for k in labels) + " |")
-        r = paired(entry)
+        r, stood = paired(entry)
         if r:
-            lines += ["", "Paired, scene by scene: slideDAM's runout over slideMPM's is %.2f at the median, %.2f to "
-                      "%.2f over the %d pairs; slideDAM runs further in %d of them." % (
-                          r[len(r)//2], r[0], r[-1], len(r), sum(1 for x in r if x > 1))]
+            lines += ["", "Paired, scene by scene, where both slides moved (a front travelling %g m or more): "
+                      "slideDAM's runout over slideMPM's is %.2f at the median, %.2f to %.2f over the %d pairs; "
+                      "slideDAM runs further in %d of them." % (MOVED, r[len(r)//2], r[0], r[-1], len(r),
+                                                               sum(1 for x in r if x > 1))]
+        grid = entry.get("standGrid")
+        if grid:
+            ran = [v for v, x in grid if x is not None and x >= MOVED]
+            stands = [v for v, x in grid if x is not None and x < MOVED]
+            mpm_ran = [float(m["values"]["rheology/s_uo"]) for m in entry["MPM"]["runs"]
+                       if m["runout"] is not None and m["runout"] >= MOVED]
+            mpm_stood = [float(m["values"]["rheology/s_uo"]) for m in entry["MPM"]["runs"]
+                         if m["runout"] is not None and m["runout"] < MOVED]
+            lines += ["", "Where the slide stands: slideDAM over s_uo %.0f to %.0f Pa in steps of %.0f Pa runs out "
+                      "up to %.0f Pa (%.1f m) and stands from %s Pa; in the sample slideMPM's slide ran out up to "
+                      "%s Pa and stood from %s Pa." % (
+                          grid[0][0], grid[-1][0], grid[1][0] - grid[0][0], max(ran),
+                          dict((v, x) for v, x in grid)[max(ran)],
+                          "%.0f" % min(stands) if stands else "none of them",
+                          "%.0f" % max(mpm_ran) if mpm_ran else "-", "%.0f" % min(mpm_stood) if mpm_stood else "-")]
+        for method, other in (("MPM", "DAM"), ("DAM", "MPM")):
+            if stood[method]:
+                lines += ["", "In %d scenes slide%s's slide stood (front under %g m) where slide%s's ran out: s_uo "
+                          "%s Pa." % (len(stood[method]), method, MOVED, other,
+                                      ", ".join("%.0f" % v for v in sorted(stood[method])))]
         lines.append("")
     lines += ["![exceedance curves and paired runouts](sweep.png)", ""]
     with open(os.path.join(HERE, "sweep.md"), "w") as f:
