@@ -88,6 +88,14 @@ def main():
     check(sorted(int((v - lo)/(hi - lo)*n) for v in s_b) == list(range(n)), "one s_b in each of the %d strata" % n)
     worst = max(abs(r["runout_m"] - law(v)) for r, v in zip(runs, s_b))
     check(worst < 1e-3, "every runout the law's within 1 mm (worst %.2e m)" % worst)
+    scene = open(os.path.join(out, "runs", "0001", "constant", "sceneProperties")).read()
+    check("500.0000001;" in scene and ("%s;" % runs[0]["values"]["base/s_b"]) in scene,
+          "the run's scene holds its s_b as recorded (%s) and the density's ten digits as written"
+          % runs[0]["values"]["base/s_b"])
+    fs = [v/(RHO*G*H*math.sin(math.radians(3.0))) for v in s_b]
+    check(all(abs(r["rigid_slab_factor_of_safety"]/f - 1) < 2e-9 for r, f in zip(runs, fs))
+          and all((r["runout_m"] > 0) == (f < 1) for r, f in zip(runs, fs)),
+          "every run's rigid-slab factor of safety s_b/(rho' g H sin(theta)), and the blocks above 1 stood")
     for site in stats["sites"]:
         d = site["distance_from_initial_front_m"]
         # Reached within T where a >= 2 d/T^2, i.e. s_b <= rho H (g sin(theta) - 2 d/T^2).

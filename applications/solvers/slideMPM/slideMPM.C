@@ -356,6 +356,7 @@ int main(int argc, char** argv)
         summary.problemSize = points.count;
         summary.problemSizeUnit = "particles";
         summary.backend = backend;
+        summary.addNumber("rigid_slab_factor_of_safety", sc.rigidSlabFactorOfSafety());
         summary.addString("setting", controls.setting);
         summary.addNumber("cells_per_height", controls.cellsPerHeight);
         summary.addNumber("particles_per_cell", controls.particlesPerCell);

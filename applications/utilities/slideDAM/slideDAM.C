@@ -195,6 +195,7 @@ int main(int argc, char** argv)
         summary.problemSize = slide.nColumns();
         summary.problemSizeUnit = "columns";
         summary.backend = "serial";
+        summary.addNumber("rigid_slab_factor_of_safety", sc.rigidSlabFactorOfSafety());
         summary.addString("setting", controls.setting);
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("node_updates_per_second", step*static_cast<double>(slide.nNodes())/summary.wallTime);

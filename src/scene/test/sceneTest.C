@@ -1,5 +1,6 @@
 // Reading a whole scene (constant/sceneProperties + system/controlDict) and
 // the checks that reject a physically meaningless one.
+#include "blockScene.H"
 #include "scene.H"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,8 @@
 namespace fs = std::filesystem;
 using slide::scene::InputError;
 using slide::scene::Scene;
+using slide::scene::Interface;
+using slide::scene::blockScene;
 
 namespace
 {
@@ -244,6 +247,45 @@ TEST_F(SceneFixture, SitesAreReadInOrderAndBadOnesNamed)
     e = readError();
     EXPECT_EQ(e.key(), "sites.s32");
     EXPECT_NE(e.message().find("more than 32 sites"), std::string::npos) << e.what();
+}
+
+TEST_F(SceneFixture, RigidSlabFactorOfSafetyIsTheLimitEquilibrium)
+{
+    // A block L x H on a planar base: s_u at rest over rho' g H sin(theta), the interface's
+    // strength where lower than the clay's, none for a hydroplaning base at rest.
+    const double H = 5.0, rho = 600.0, theta = 5.0*M_PI/180.0;
+    const double weightAlong = rho*9.81*H*std::sin(theta);
+    Scene s = blockScene(5.0, 40.0, H, rho, 5000.0, Interface());
+    EXPECT_NEAR(s.rigidSlabFactorOfSafety(), 5000.0/weightAlong, 1e-12);   // Table 1 Case 6: 1.95
+    EXPECT_NEAR(s.rigidSlabDriving(), 40.0*weightAlong, 1e-9);
+    Interface frictional;
+    frictional.type = Interface::Type::frictional;
+    frictional.s_b = 1800.0;
+    s.interface = frictional;
+    EXPECT_NEAR(s.rigidSlabFactorOfSafety(), 1800.0/weightAlong, 1e-12);  // Case 8: 0.70
+    frictional.s_b = 9000.0;
+    s.interface = frictional;
+    EXPECT_NEAR(s.rigidSlabFactorOfSafety(), 5000.0/weightAlong, 1e-12);  // the clay fails first
+    Interface hydroplaning;
+    hydroplaning.type = Interface::Type::hydroplaning;
+    hydroplaning.C_F = 0.003;
+    s.interface = hydroplaning;
+    EXPECT_EQ(s.rigidSlabFactorOfSafety(), 0.0);
+    s = blockScene(0.0, 40.0, H, rho, 5000.0, Interface());
+    EXPECT_TRUE(std::isinf(s.rigidSlabFactorOfSafety()));
+    EXPECT_NE(s.describe().find("factor of safety infinite"), std::string::npos) << s.describe();
+
+    // A thickness profile across a polyline's kink: each part's weight along its own segment.
+    std::string sc = edit("profile   planar;\n    angle     3.43;", "profile polyline;\n    points ((0 0) (30 -3) (300 -5));");
+    sc = sc.replace(sc.find("shape        rectangle;"), 23, "shape profile;\n    thickness ((10 0) (20 4) (40 4) (50 0));");
+    write(withoutRectangleKeys(sc));
+    const Scene p = Scene::read(dir.string());
+    const double L1 = std::hypot(30.0, 3.0);
+    const double A1 = 0.5*4.0*10.0 + 4.0*(L1 - 20.0), A2 = 4.0*(40.0 - L1) + 0.5*4.0*10.0;
+    const double driving = p.slide.density*p.g*(A1*3.0/L1 + A2*2.0/std::hypot(270.0, 2.0));
+    EXPECT_NEAR(p.rigidSlabDriving()/driving, 1.0, 1e-4);
+    EXPECT_NEAR(p.rigidSlabResistance(), p.rheology.s_uo*40.0, 1e-9*p.rheology.s_uo);
+    EXPECT_NE(p.describe().find("as a rigid slab"), std::string::npos) << p.describe();
 }
 
 TEST_F(SceneFixture, SlideBelowTheBaseIsRejected)

@@ -516,6 +516,7 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
     sum.backend = Pstream::parRun()
         ? "OpenFOAM v1912, MPI (" + std::to_string(Pstream::nProcs()) + " ranks)"
         : std::string("OpenFOAM v1912, serial");
+    sum.addNumber("rigid_slab_factor_of_safety", scene_.rigidSlabFactorOfSafety());
     sum.addNumber("final_length_m", state_.sample.front - state_.sample.rear);
     sum.addNumber("max_thickness_m", state_.sample.maxThickness);
     sum.addNumber("volume_relative_change", state_.volume/initialVolume_ - 1);
