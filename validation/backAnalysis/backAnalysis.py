@@ -22,7 +22,6 @@ Usage: validation/backAnalysis/backAnalysis.py [--stored]
   --stored: redraw backAnalysis.md and backAnalysis.png from backAnalysis.json without running
 """
 import json
-import math
 import os
 import subprocess
 import sys
@@ -32,6 +31,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(TOP, "validation", "lib"))
 import options  # noqa: E402
+import rigid_block  # noqa: E402
 from cfdcase import copy_scene  # noqa: E402
 from plotting import pyplot  # noqa: E402
 from runner import slidefoam_env  # noqa: E402
@@ -82,42 +82,15 @@ def scene_numbers(case):
             float(value("base/rhoWater")), list(zip(points[0::2], points[1::2])), float(value("g")))
 
 
-def rigid_block_runout(numbers, s_b=None, c_f=None):
-    """Toe travel of a rigid block released at rest with its rear at the polyline's start, until its downslope
-    motion first stops: rho' H L dV/dt = rho' g H (integral of sin(theta) over the block's footprint) - L s_b(V),
-    s_b constant or 0.5 rho_w C_F V^2; positions along the base (arc length), the block bending over the kinks as
-    the depth-averaged slide does."""
-    from scipy.integrate import solve_ivp
-    length, height, rho, rho_w, points, g = numbers
-    arc, drop = [0.0], [0.0]   # arc length and height at the vertices
-    for (x0, z0), (x1, z1) in zip(points, points[1:]):
-        arc.append(arc[-1] + math.hypot(x1 - x0, z1 - z0))
-        drop.append(z1)
-
-    def height_at(s):
-        for k in range(len(arc) - 1):
-            if s <= arc[k + 1] or k == len(arc) - 2:
-                return drop[k] + (drop[k + 1] - drop[k])*(s - arc[k])/(arc[k + 1] - arc[k])
-
-    def rhs(t, y):
-        rear, v = y
-        # The integral of sin(theta) ds over the footprint is the drop of the base across it.
-        drive = g*(height_at(rear) - height_at(rear + length))/length
-        resist = s_b if s_b is not None else 0.5*rho_w*c_f*v*v
-        return [v, drive - resist/(rho*height)]
-
-    def stopped(t, y):
-        return y[1] if t > 1e-6 else 1.0
-    stopped.terminal, stopped.direction = True, -1
-    sol = solve_ivp(rhs, (0.0, 1e5), [0.0, 0.0], events=stopped, rtol=1e-10, atol=1e-10, max_step=0.5)
-    return sol.y[0][-1]
-
-
 def rigid_answer(numbers, kind, target, lo, hi):
+    """The s_b or C_F with which the rigid block's equation of motion stops at the target."""
     from scipy.optimize import brentq
-    f = (lambda v: rigid_block_runout(numbers, s_b=v) - target) if kind == "s_b" else \
-        (lambda v: rigid_block_runout(numbers, c_f=v) - target)
-    return brentq(f, lo, hi, xtol=1e-10*(hi - lo))
+    length, height, rho, rho_w, points, g = numbers
+
+    def miss(v):
+        return rigid_block.runout(points, length, height, rho, g, rho_water=rho_w,
+                                  **({"s_b": v} if kind == "s_b" else {"c_f": v})) - target
+    return brentq(miss, lo, hi, xtol=1e-10*(hi - lo))
 
 
 def back_analyse(case, method, study, out):
@@ -157,6 +130,12 @@ def measure():
         for method in METHODS:
             entry[method] = back_analyse(case, method, study, os.path.join(folder, method))
             r = entry[method]["result"]
+            if study.get("rigid") and r["outcome"] == "matched":
+                # The rigid block's runout with the method's answer: the method's own error there.
+                length, height, rho, rho_w, points, g = numbers
+                entry[method]["rigidRunout"] = rigid_block.runout(
+                    points, length, height, rho, g, rho_water=rho_w,
+                    **({"s_b": r["best"]["value"]} if study["rigid"] == "s_b" else {"c_f": r["best"]["value"]}))
             print("%s, %s: %s (%.0f s)" % (study["name"], method, r["message"], entry[method]["wall"]), flush=True)
         data.append(entry)
     return data

@@ -229,11 +229,15 @@ int main(int argc, char** argv)
         bool restPending = false;
         // Hydroplaning needs motion: the water film that carries the slide has no
         // strength at rest, so a block that climbs an adverse slope would slide back
-        // and forth for ever. Its runout is where its bulk motion stops (the
-        // downslope momentum reaches zero), as slideDAM arrests a column whose
-        // velocity would reverse; an elastic block rings too much for every particle
-        // to fall below restVelocity together.
+        // and forth for ever. So would a block on a frictional base whose s_b is
+        // below the pull of the adverse slope it climbs. Its runout is where its bulk
+        // motion stops (the downslope momentum reaches zero), as slideDAM arrests a
+        // column whose velocity would reverse; an elastic block rings too much for
+        // every particle to fall below restVelocity together. On a frictional base
+        // only where the base under the slide rises towards its front: on a downslope
+        // a stopping slide's ringing turns its momentum long before it is at rest.
         const bool hydroplaning = sc.interface.type == scene::Interface::Type::hydroplaning;
+        const bool frictional = sc.interface.type == scene::Interface::Type::frictional;
         bool turned = false;
         bool moved = false;   // a turn needs motion first: the slide's mean downslope speed above restVelocity
         bool warnedPastBase = false;
@@ -297,7 +301,9 @@ int main(int argc, char** argv)
             // Slow is not rest while accelerating: a slide released under a small net force starts slowly.
             slowingDown = next.maxSpeed <= stats.maxSpeed;
             moved = moved || next.momentumX > rc.restVelocity*initialMass;
-            turned = turned || (hydroplaning && moved && stats.momentumX > 0.0 && next.momentumX <= 0.0);
+            const bool climbing = frictional
+                && sc.base.point(frame.level.arcLength(next.xmax)).z > sc.base.point(frame.level.arcLength(next.xmin)).z;
+            turned = turned || ((hydroplaning || climbing) && moved && stats.momentumX > 0.0 && next.momentumX <= 0.0);
             stats = next;
             if (!siteSampler.empty()) sites.observe(t, siteSampler.sample(points, stats));
             if (!warnedPastBase)
@@ -318,7 +324,9 @@ int main(int argc, char** argv)
                 atRest = true;
                 write(t);
                 progress.report(t, step, true, slow ? "all particles at rest"
-                                                    : "the slide's downslope motion stopped (hydroplaning holds nothing at rest)");
+                                                    : hydroplaning
+                                                    ? "the slide's downslope motion stopped (hydroplaning holds nothing at rest)"
+                                                    : "the slide's downslope motion stopped (where s_b cannot hold it, it would slide back)");
                 break;
             }
             if (schedule.writeDue(s))
