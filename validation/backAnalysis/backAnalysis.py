@@ -21,11 +21,9 @@ platforms/validation-work/backAnalysis. About 50 min on 2 cores, most of it slid
 Usage: validation/backAnalysis/backAnalysis.py [--stored]
   --stored: redraw backAnalysis.md and backAnalysis.png from backAnalysis.json without running
 """
-import json
 import os
 import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -34,7 +32,7 @@ import options  # noqa: E402
 import rigid_block  # noqa: E402
 from cfdcase import copy_scene  # noqa: E402
 from plotting import pyplot  # noqa: E402
-from runner import slidefoam_env  # noqa: E402
+from runner import run_tool, slidefoam_env  # noqa: E402
 
 TOLERANCE = 0.01
 METHODS = ("slideDAM", "slideMPM")
@@ -100,11 +98,8 @@ def back_analyse(case, method, study, out):
            "-tolerance", "%g" % TOLERANCE, "-set", "system/mpmDict:writeFields", "no"]
     for key, value in study.get("set", {}).items():
         cmd += ["-set", key, value]
-    t0 = time.time()
-    subprocess.run(cmd, env=slidefoam_env())
-    with open(os.path.join(out, "backAnalysis.json")) as f:
-        j = json.load(f)
-    return {"result": j["result"], "wall": time.time() - t0,
+    j, wall = run_tool(cmd, os.path.join(out, "backAnalysis.json"))
+    return {"result": j["result"], "wall": wall,
             "runs": [{"value": r["value"], "runout": r.get("observed"), "atRest": r.get("at_rest"),
                       "failed": r.get("failed") if r.get("observed") is None else None} for r in j["runs"]]}
 

@@ -47,3 +47,14 @@ def run_method(app, case_dir, env=None):
         raise SystemExit("%s failed on %s (exit %d):\n%s" % (app, case_dir, rc, open(log).read()[-2000:]))
     out = os.path.join(case_dir, "postProcessing", app)
     return read_summary(os.path.join(out, "summary.json")), read_runout(os.path.join(out, "runout.dat"))
+
+
+def run_tool(cmd, report):
+    """Runs one of the project's tools (slideSweep, slideBackAnalysis) and returns (its JSON report, wall time);
+    a tool that exits with 1 over a failed run still writes the report, which says so."""
+    import json
+    import time
+    t0 = time.time()
+    subprocess.run(cmd, env=slidefoam_env())
+    with open(report) as f:
+        return json.load(f), time.time() - t0

@@ -21,7 +21,6 @@ import json
 import os
 import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -29,7 +28,7 @@ sys.path.insert(0, os.path.join(TOP, "validation", "lib"))
 import options  # noqa: E402
 from cfdcase import copy_scene, set_sites  # noqa: E402
 from plotting import pyplot  # noqa: E402
-from runner import slidefoam_env  # noqa: E402
+from runner import run_tool, slidefoam_env  # noqa: E402
 
 CASES = [
     {"name": "Table 1 Case 2", "tutorial": "tutorials/table1/case02", "sites": [("d40", 80.0), ("d60", 100.0)],
@@ -48,11 +47,8 @@ def sweep(case, out, method, n, samples):
            "-samples", str(n), "-seed", str(SEED), "-set", "system/mpmDict:writeFields", "no"]
     for key, dist, *p in samples:
         cmd += ["-sample", key, dist] + ["%g" % v for v in p]
-    t0 = time.time()
-    subprocess.run(cmd, env=slidefoam_env())
-    with open(os.path.join(out, "sweep.json")) as f:
-        result = json.load(f)
-    return {"statistics": result["statistics"], "wall": time.time() - t0,
+    result, wall = run_tool(cmd, os.path.join(out, "sweep.json"))
+    return {"statistics": result["statistics"], "wall": wall,
             "runs": [{"values": r["values"], "runout": r.get("runout_m"), "atRest": r.get("at_rest"),
                       "wall": r.get("wall_time_s"), "failed": r.get("failed"),
                       "sites": [s["arrival_time_s"] for s in r.get("sites", [])]} for r in result["runs"]]}
