@@ -125,6 +125,12 @@ def main():
     rc, stdout, _ = tool(*args)
     check(rc == 0 and stdout.count("reused") == result["runs"] and open(os.path.join(out, "backAnalysis.md")).read()
           == md, "the same command again reuses all %d runs and writes the same report" % result["runs"])
+    # Interrupted before its report: its runs are its own, not foreign files.
+    for name in ("backAnalysis.json", "backAnalysis.md", "backAnalysis.png"):
+        os.remove(os.path.join(out, name))
+    rc, stdout, _ = tool(*args)
+    check(rc == 0 and stdout.count("reused") == result["runs"],
+          "a search interrupted before its report: its %d runs reused, not refused as foreign" % result["runs"])
 
     # A site's arrival: the front 10 m ahead at 8 s.
     out = os.path.join(work, "arrival")

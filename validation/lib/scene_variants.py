@@ -130,3 +130,14 @@ def collect(run_dir, method, values, index):
                 "sites": [{k: s.get(k) for k in ["name", "position_m", "distance_from_initial_front_m"]
                            + [f for f, _ in SITE_FIELDS] + ["covered_at_end"]} for s in j.get("sites", [])]})
     return row
+
+
+def foreign_files(out_dir, report):
+    """Whether out_dir holds files a variants tool did not write: anything but its report (e.g. sweep.json) and a
+    runs/ folder whose entries are stamped runs (an interrupted tool leaves runs without its report)."""
+    if not os.path.isdir(out_dir) or not os.listdir(out_dir) or os.path.isfile(os.path.join(out_dir, report)):
+        return False
+    if os.listdir(out_dir) != ["runs"]:
+        return True
+    runs = os.path.join(out_dir, "runs")
+    return not all(os.path.isfile(os.path.join(runs, name, "sweepRun.json")) for name in os.listdir(runs))
