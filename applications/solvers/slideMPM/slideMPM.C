@@ -301,9 +301,13 @@ int main(int argc, char** argv)
             // Slow is not rest while accelerating: a slide released under a small net force starts slowly.
             slowingDown = next.maxSpeed <= stats.maxSpeed;
             moved = moved || next.momentumX > rc.restVelocity*initialMass;
-            const bool climbing = frictional
-                && sc.base.point(frame.level.arcLength(next.xmax)).z > sc.base.point(frame.level.arcLength(next.xmin)).z;
-            turned = turned || ((hydroplaning || climbing) && moved && stats.momentumX > 0.0 && next.momentumX <= 0.0);
+            if (!turned && moved && stats.momentumX > 0.0 && next.momentumX <= 0.0)
+            {
+                const bool climbing = frictional
+                    && sc.base.point(frame.level.arcLength(next.xmax)).z
+                       > sc.base.point(frame.level.arcLength(next.xmin)).z;
+                turned = hydroplaning || climbing;
+            }
             stats = next;
             if (!siteSampler.empty()) sites.observe(t, siteSampler.sample(points, stats));
             if (!warnedPastBase)
