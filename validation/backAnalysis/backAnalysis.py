@@ -31,6 +31,7 @@ TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(TOP, "validation", "lib"))
 import options  # noqa: E402
 import rigid_block  # noqa: E402
+from scene_variants import split_key  # noqa: E402
 from cfdcase import copy_scene  # noqa: E402
 from plotting import pyplot  # noqa: E402
 from runner import run_method, run_tool, slidefoam_env  # noqa: E402
@@ -119,7 +120,7 @@ def check_at(case, study, value, out):
     shutil.copytree(case, out)
     for key, v in list(study.get("set", {}).items()) + [(study["find"][0], "%.10g" % value),
                                                        ("system/mpmDict:writeFields", "no")]:
-        f, path = key.split(":", 1) if ":" in key else ("constant/sceneProperties", key)
+        f, path = split_key(key)
         foam_dictionary(os.path.join(out, f), "-entry", path, "-set", v)
     t0 = time.time()
     s, _ = run_method("slideMPM", out, env={"OMP_NUM_THREADS": "1", "OMP_PROC_BIND": "false"})
