@@ -9,8 +9,8 @@ front to the site at t is rho' H (g sin(theta) - 2 d/t^2).
   in a few runs; a step across the target is reported as a jump, its bracket narrowed to 1e-4 of the range; a
   target outside the ends is "not bracketed" after two runs; a run that fails ends the search naming it; a
   non-monotone observable is flagged, a wiggle below the tolerance is not; the run limit is kept.
-- slideDAM on the block: the s_b for a runout of 12 m and for the site 10 m ahead reached at 8 s, each against the
-  law; the same command again reuses every run; a target beyond both ends: exit 1, "not bracketed" in the report.
+- slideDAM on the block: the s_b for a runout of 12 m, for its front of 99 % of the mass 0.4 m behind that, and
+  for the site 10 m ahead reached at 8 s, each against the law; the same command again reuses every run; a target beyond both ends: exit 1, "not bracketed" in the report.
 - Bad options, keys and observables: exit 1, the file and key or option named, nothing written.
 """
 import importlib.machinery
@@ -131,6 +131,18 @@ def main():
     rc, stdout, _ = tool(*args)
     check(rc == 0 and stdout.count("reused") == result["runs"],
           "a search interrupted before its report: its %d runs reused, not refused as foreign" % result["runs"])
+
+    # The front of 99 % of the mass: the rigid block's lies 1 % of its 40 m behind its front, so 11.6 m asks the
+    # s_b of a 12 m runout.
+    out = os.path.join(work, "massFront")
+    rc, stdout, stderr = tool("-case", CASE, "-dir", out, "-find", "base/s_b", "100", "900", "-match", "massFront",
+                              "%g" % (target - 0.01*40.0), "-tolerance", "%g" % tol)
+    with open(os.path.join(out, "backAnalysis.json")) as f:
+        result = json.load(f)["result"]
+    found = result["best"]["value"]
+    check(rc == 0 and abs(found - exact) <= band,
+          "front of 99 %% of the mass %g m: s_b %.4f Pa, the law's for a %g m runout %.4f Pa within %.2f Pa (exit %d)"
+          % (target - 0.4, found, target, exact, band, rc))
 
     # A site's arrival: the front 10 m ahead at 8 s.
     out = os.path.join(work, "arrival")

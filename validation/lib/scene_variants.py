@@ -124,7 +124,8 @@ def collect(run_dir, method, values, index):
     j = read_summary(summary)
     with open(os.path.join(run_dir, "log." + method), errors="replace") as f:
         row["warnings"] = [line.strip()[len("Warning: "):] for line in f if line.startswith("Warning: ")]
-    row.update({"runout_m": j["runout_m"], "at_rest": j["at_rest"], "end_time_s": j["end_time_s"],
+    row.update({"runout_m": j["runout_m"], "mass_front_m": j.get("front_of_99_percent_mass_m"),
+                "at_rest": j["at_rest"], "end_time_s": j["end_time_s"],
                 "rigid_slab_factor_of_safety": j.get("rigid_slab_factor_of_safety"),
                 "mechanism": j.get("mechanism", "-"), "wall_time_s": j["wall_time_s"],
                 "sites": [{k: s.get(k) for k in ["name", "position_m", "distance_from_initial_front_m"]

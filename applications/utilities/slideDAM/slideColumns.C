@@ -19,6 +19,21 @@ double SlideColumns::totalArea() const
     return a;
 }
 
+double SlideColumns::massFront(const double share) const
+{
+    const double behind = share*totalArea();
+    double a = 0.0;
+    for (int i = 0; i < nColumns(); ++i)
+    {
+        if (a + area[i] >= behind && area[i] > 0.0)
+        {
+            return x[i] + (behind - a)/area[i]*(x[i + 1] - x[i]) - initialFront;
+        }
+        a += area[i];
+    }
+    return front();
+}
+
 SlideColumns SlideColumns::fromScene(const scene::Scene& sc, int columns)
 {
     const scene::SlideGeometry& g = sc.slide;

@@ -200,6 +200,7 @@ int main(int argc, char** argv)
         summary.addNumber("steps", static_cast<double>(step));
         summary.addNumber("node_updates_per_second", step*static_cast<double>(slide.nNodes())/summary.wallTime);
         summary.addNumber("final_length_m", slide.x.back() - slide.x.front());
+        summary.addNumber("front_of_99_percent_mass_m", slide.massFront(0.99));
         summary.addNumber("mass_relative_change", (mass - initialMass)/initialMass);
         const std::string finalMechanism = dam::detectMechanism(slide, sc.g);
         summary.addString("mechanism", output::runMechanism(mechanisms, finalMechanism, atRest));

@@ -344,6 +344,28 @@ bool Foam::functionObjects::slideRunout::execute()
         s.sample.rear = sr - s0;
         s.sample.frontVelocity = colAV[front] > 0 ? colAVU[front]/colAV[front] : 0;
     }
+    // The point with 99 % of the slide's volume behind it, each column's spread over
+    // its width: the front of the body where a thin smear or a thrown-off piece sets
+    // the alpha = 0.5 front, defined as slideMPM's and slideDAM's (summary.json).
+    {
+        scalar total = 0;
+        forAll(colAV, c) total += colAV[c];
+        const scalar behind = 0.99*total;
+        scalar upTo = 0;
+        for (label c = 0; c < nCol && total > 0; ++c)
+        {
+            if (upTo + colAV[c] >= behind && colAV[c] > 0)
+            {
+                const scalar half = nCol > 1
+                    ? 0.5*(c + 1 < nCol ? columnS_[c + 1] - columnS_[c] : columnS_[c] - columnS_[c - 1]) : 0;
+                const scalar lo = c > 0 ? 0.5*(columnS_[c - 1] + columnS_[c]) : columnS_[c] - half;
+                const scalar hi = c + 1 < nCol ? 0.5*(columnS_[c] + columnS_[c + 1]) : columnS_[c] + half;
+                s.massFront = lo + (behind - upTo)/colAV[c]*(hi - lo) - s0;
+                break;
+            }
+            upTo += colAV[c];
+        }
+    }
     if (sites_ && !sites_->empty())
     {
         // The column over each site (the base face nearest it): its slide volume over
@@ -518,6 +540,7 @@ void Foam::functionObjects::slideRunout::writeSummary(const scalar wallTime, con
         : std::string("OpenFOAM v1912, serial");
     sum.addNumber("rigid_slab_factor_of_safety", scene_.rigidSlabFactorOfSafety());
     sum.addNumber("final_length_m", state_.sample.front - state_.sample.rear);
+    sum.addNumber("front_of_99_percent_mass_m", state_.massFront);
     sum.addNumber("max_thickness_m", state_.sample.maxThickness);
     sum.addNumber("volume_relative_change", state_.volume/initialVolume_ - 1);
     sum.addNumber("alpha_min", state_.alphaMin);

@@ -216,6 +216,30 @@ TEST(SlideDAM, MassIsConservedToRoundOff)
     EXPECT_NEAR(A, A0, 1e-12*A0);
 }
 
+TEST(SlideDAM, MassFrontLeavesItsShareOfTheSlideBehind)
+{
+    // The seeded rectangle: 99 % of its 40 m behind the point 0.4 m short of the front, half behind its middle.
+    const scene::Scene sc = case2LikeScene();
+    dam::SlideColumns s = dam::SlideColumns::fromScene(sc, 200);
+    EXPECT_NEAR(s.massFront(0.99), -0.4, 1e-9);
+    EXPECT_NEAR(s.massFront(0.5), -20.0, 1e-9);
+    EXPECT_NEAR(s.massFront(1.0), s.front(), 1e-9);
+
+    // Stretched into a thinning tongue, the area ahead of the point is 1 %, and the front lies beyond it.
+    dam::DamIntegrator integ(sc, fast(200));
+    double t = 0.0;
+    runTo(integ, s, t, 10.0);
+    const double x99 = s.massFront(0.99) + s.initialFront;
+    double ahead = 0.0;
+    for (int i = 0; i < s.nColumns(); ++i)
+    {
+        const double from = std::max(s.x[i], x99);
+        if (from < s.x[i + 1]) ahead += s.columnThickness(i)*(s.x[i + 1] - from);
+    }
+    EXPECT_NEAR(ahead, 0.01*s.totalArea(), 1e-9*s.totalArea());
+    EXPECT_GT(s.front() - s.massFront(0.99), 0.4);   // the tongue is thinner than the seeded slide
+}
+
 TEST(SlideDAM, ProfileCarriesTheStrengthAndTheBasalStressThatItCaps)
 {
     // A Case 2-like slide shearing on a no-slip base: the base resists with the material's own
