@@ -122,6 +122,9 @@ def main():
     check(all(os.path.isfile(os.path.join(out, f)) for f in ("backAnalysis.md", "backAnalysis.png")),
           "backAnalysis.md and backAnalysis.png written")
     md = open(os.path.join(out, "backAnalysis.md")).read()
+    check("foremost material lies 0.4 beyond the front of 99 % of the mass, 1 % of the deposit's length" in md
+          and "-match massFront matches" not in md,
+          "the rigid block's last 1 % of the mass: 1 % of its 40 m, its runout not flagged as set by a tip")
     rc, stdout, _ = tool(*args)
     check(rc == 0 and stdout.count("reused") == result["runs"] and open(os.path.join(out, "backAnalysis.md")).read()
           == md, "the same command again reuses all %d runs and writes the same report" % result["runs"])

@@ -125,6 +125,7 @@ def collect(run_dir, method, values, index):
     with open(os.path.join(run_dir, "log." + method), errors="replace") as f:
         row["warnings"] = [line.strip()[len("Warning: "):] for line in f if line.startswith("Warning: ")]
     row.update({"runout_m": j["runout_m"], "mass_front_m": j.get("front_of_99_percent_mass_m"),
+                "final_length_m": j.get("final_length_m"),
                 "at_rest": j["at_rest"], "end_time_s": j["end_time_s"],
                 "rigid_slab_factor_of_safety": j.get("rigid_slab_factor_of_safety"),
                 "mechanism": j.get("mechanism", "-"), "wall_time_s": j["wall_time_s"],
