@@ -90,6 +90,25 @@ def check_search(mod):
     outcome, _ = s.solve(0.0, 10.0)
     check(outcome == "out of runs" and len(s.runs) == 5, "the run limit kept (5 runs, %s)" % outcome)
 
+    # Scatter at the answer: a line measures none; a line with a scatter of +-1.5 on a tolerance of 0.5 (a front's
+    # particles, a creep's stop) is found to scatter by more than the tolerance, and the entry's range widens.
+    def with_scatter(amplitude):
+        s = mod.Search(made_up(lambda x: 100.0 - 5.0*x + amplitude*math.sin(1e5*x)), "k", "runout", 50.0, 1e-2, 30)
+        outcome, _ = s.solve(0.0, 20.0)
+        sides = s.sensitivity(0.05)
+        rows = s.scatter_runs(4, 0.002)
+        return s, mod.analyse(s, outcome, sides, rows), rows
+    s, result, rows = with_scatter(0.0)
+    check(result["outcome"] == "matched" and len(rows) == 4 and result["scatter"]["value"] < 1e-9
+          and "resolution_with_scatter" not in result and abs(result["resolution"] - 0.5/5.0) < 1e-9,
+          "a line: no scatter at the answer (%.2g), the entry open by the tolerance over the slope, 0.1"
+          % result["scatter"]["value"])
+    s, result, rows = with_scatter(1.5)
+    check(0.5 < result["scatter"]["value"] <= 3.0 + 1e-9 and abs(result["resolution_with_scatter"]
+                                                                  - (0.5 + result["scatter"]["value"])/5.0) < 0.05,
+          "a line with a scatter of +-1.5: %.3g measured (more than the tolerance 0.5, at most twice the amplitude), "
+          "the entry open by %.3g" % (result["scatter"]["value"], result["resolution_with_scatter"]))
+
     rows = [{"run": i + 1, "value": float(i), "observed": v} for i, v in enumerate([0.0, 1.0, 0.5, 2.0, 1.999])]
     breaks = mod.monotone_breaks(rows, 0.01)
     check([(p[0]["run"], p[1]["run"]) for p in breaks] == [(2, 3)],
