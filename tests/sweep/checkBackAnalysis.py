@@ -109,6 +109,22 @@ def check_search(mod):
           "a line with a scatter of +-1.5: %.3g measured (more than the tolerance 0.5, at most twice the amplitude), "
           "the entry open by %.3g" % (result["scatter"]["value"], result["resolution_with_scatter"]))
 
+    # A scatter of +-2 on the tolerance of 0.5: the search ends on a "jump" that the runs beside it show is the
+    # scatter; a true step's runs stay by the ends on their sides.
+    s = mod.Search(made_up(lambda x: 100.0 - 5.0*x + 2.0*math.sin(1e5*x)), "k", "runout", 50.0, 1e-2, 30)
+    outcome, _ = s.solve(0.0, 20.0)
+    a, b = s.bracket()
+    result = mod.analyse(s, outcome, [None, None], s.scatter_runs(4, 0.002, around=0.5*(a["value"] + b["value"])))
+    check(outcome == "jump" and result.get("jump_is_scatter") is True,
+          "a scatter of +-2 ends the search on a jump, read as scatter (%.3g beside it)" % result["scatter"]["value"])
+    s = mod.Search(made_up(lambda x: 10.0 - 0.1*x if x < 3.3 else 200.0 - 0.1*x), "k", "runout", 100.0, 1e-3, 40)
+    outcome, _ = s.solve(0.0, 10.0)
+    a, b = s.bracket()
+    result = mod.analyse(s, outcome, [None, None], s.scatter_runs(4, 0.002, around=0.5*(a["value"] + b["value"])))
+    check(outcome == "jump" and result.get("jump_is_scatter") is False and result["scatter"]["value"] < 0.01,
+          "a true step: its runs beside the jump stay by their sides' ends (%.3g), not read as scatter"
+          % result["scatter"]["value"])
+
     rows = [{"run": i + 1, "value": float(i), "observed": v} for i, v in enumerate([0.0, 1.0, 0.5, 2.0, 1.999])]
     breaks = mod.monotone_breaks(rows, 0.01)
     check([(p[0]["run"], p[1]["run"]) for p in breaks] == [(2, 3)],
