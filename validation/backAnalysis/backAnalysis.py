@@ -205,12 +205,14 @@ def write(data):
              "runout lies within the tolerance of the target; then runs 5 % either side of the answer (or the "
              "search's own, 2.5-10 % away) give the runout's local slope. Each method at its tutorial's set-up "
              "(Case 3: Table 1's). Columns: the value found and its run's runout; the per cent the runout moves for "
-             "1 % on the entry there; the range of the entry that the tolerance leaves open (tolerance over the "
-             "slope); for the Finneidfjord block, the runout of the rigid block's equation of motion with the value "
+             "1 % on the entry there; the runout's scatter from run to run at the answer (how far runs 0.2 and "
+             "0.4 % either side of it part from that slope; since session 81); the range of the entry that the "
+             "tolerance leaves open (tolerance over the slope; where the scatter exceeds the tolerance, the two "
+             "together over the slope, in bold); for the Finneidfjord block, the runout of the rigid block's equation of motion with the value "
              "found (`../lib/rigid_block.py`), against which the method's own runout there is its error.", "",
              "| study | entry | target [m] | paper | method | value found | its runout [m] | runs, wall | "
-             "sensitivity | the tolerance leaves | rigid block's runout with it [m] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "sensitivity | scatter at the answer [m] | the tolerance leaves | rigid block's runout with it [m] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for e in data:
         for method in METHODS:
             f = e[method]
@@ -227,8 +229,12 @@ def write(data):
             # The runs' own wall times (a search repeated reuses them, in seconds).
             cells.append("%d, %.0f s" % (r["runs"], r.get("wall_time_s", f["wall"])))
             cells.append("-" if r.get("elasticity") is None else "%.2g %%" % abs(r["elasticity"]))
-            cells.append("-" if r.get("resolution") is None
-                         else "+-%.2g %%" % (100*r["resolution"]/abs(r["best"]["value"])))
+            cells.append("-" if r.get("scatter") is None else "%.2g" % r["scatter"]["value"])
+            if r.get("resolution_with_scatter") is not None:
+                cells.append("**+-%.2g %%**" % (100*r["resolution_with_scatter"]/abs(r["best"]["value"])))
+            else:
+                cells.append("-" if r.get("resolution") is None
+                             else "+-%.2g %%" % (100*r["resolution"]/abs(r["best"]["value"])))
             cells.append("-" if f.get("rigidRunout") is None else "%.1f (its runout %+.2f %%)" % (
                 f["rigidRunout"], 100*(r["best"]["observed"]/f["rigidRunout"] - 1)))
             lines.append("| " + " | ".join(cells) + " |")
