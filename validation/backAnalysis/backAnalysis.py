@@ -205,8 +205,8 @@ def write(data):
              "runout lies within the tolerance of the target; then runs 5 % either side of the answer (or the "
              "search's own, 2.5-10 % away) give the runout's local slope. Each method at its tutorial's set-up "
              "(Case 3: Table 1's). Columns: the value found and its run's runout; the per cent the runout moves for "
-             "1 % on the entry there; the runout's scatter from run to run at the answer (how far runs 0.2 and "
-             "0.4 % either side of it part from that slope; since session 81); the range of the entry that the "
+             "1 % on the entry there; the runout's scatter from run to run at the answer (how far runs 0.2 % "
+             "either side of it part from that slope; since session 81); the range of the entry that the "
              "tolerance leaves open (tolerance over the slope; where the scatter exceeds the tolerance, the two "
              "together over the slope, in bold); for the Finneidfjord block, the runout of the rigid block's equation of motion with the value "
              "found (`../lib/rigid_block.py`), against which the method's own runout there is its error.", "",
