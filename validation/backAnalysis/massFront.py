@@ -114,11 +114,12 @@ def measure():
 
 
 def stored_search():
-    """Session 80's search on the foremost material (backAnalysis.json), for the comparison."""
+    """The search on the foremost material (backAnalysis.json, backAnalysis.py): {method: its entry in the
+    Mediterranean escarpment's study}."""
     with open(os.path.join(HERE, "backAnalysis.json")) as f:
         studies = json.load(f)
     entry = [s for s in studies if s["study"] == "Mediterranean escarpment"][0]
-    return {m: entry[m]["result"]["best"]["value"] for m in ("slideDAM", "slideMPM")}
+    return {m: entry[m] for m in ("slideDAM", "slideMPM")}
 
 
 def report(data):
@@ -137,7 +138,7 @@ def report(data):
         for r in ok[m]:
             if m == "slideDAM" and r["value"] % 2000 and r["value"] not in (15000,):
                 continue   # the table every 2 kPa; the figure has every run
-            lines.append("| %.2f | %.1f | %.1f | %.1f | %s | %.0f |" % (
+            lines.append("| %.2f | %.1f | %.1f | %.1f | %s | %.3g |" % (
                 r["value"]/1000, r["runout"], r["massFront"], r["runout"] - r["massFront"], r["mechanism"],
                 r["runWall"]))
         lines.append("")
@@ -153,12 +154,12 @@ def report(data):
                                                              r["mechanism"], "yes" if r["identicalToScan"] else "no"))
     stored = stored_search()
     lines += ["", "## Back-analysis of the observed %g m" % data["target"], "",
-              "| method | on the runout (session 80, backAnalysis.md) | on the mass front | its runs |",
+              "| method | on the runout (backAnalysis.md) | on the mass front | its runs |",
               "|---|---|---|---|"]
     for m in ("slideDAM", "slideMPM"):
         b = data["backAnalysis"][m]
         lines.append("| %s | %.2f kPa | %s | %d, %.0f s |" % (
-            m, stored[m]/1000, "%.2f kPa (mass front %.1f m)" % (b["value"]/1000, b["observed"])
+            m, stored[m]["result"]["best"]["value"]/1000, "%.2f kPa (mass front %.1f m)" % (b["value"]/1000, b["observed"])
             if b["outcome"] == "matched" else b["message"], len(b["runs"]), b["wall"]))
     lines += ["", "![runout and mass front against s_uo](massFront.png)", ""]
     with open(os.path.join(HERE, "massFront.md"), "w") as f:
@@ -169,7 +170,7 @@ def report(data):
     colours = {"slideDAM": "C0", "slideMPM": "C3"}
     for k, lo_hi in enumerate(((8, 30), (9.5, 12.5))):
         a = ax[k]
-        for m in ("slideDAM", "slideMPM"):
+        for m in ("slideDAM", "slideMPM") if k == 0 else ("slideMPM",):
             rows = [r for r in ok[m] if lo_hi[0] <= r["value"]/1000 <= lo_hi[1]]
             a.plot([r["value"]/1000 for r in rows], [r["runout"] for r in rows], "o-", color=colours[m], ms=3,
                    label="%s runout" % m)
@@ -179,14 +180,19 @@ def report(data):
             a.plot([data["repeatAt"]/1000]*len(reps), [r["runout"] for r in reps], "x", color="k",
                    label="slideMPM again at %.1f kPa" % (data["repeatAt"]/1000))
             a.plot([data["repeatAt"]/1000]*len(reps), [r["massFront"] for r in reps], "+", color="k")
+            searched = [r for r in stored["slideMPM"]["runs"] if r["runout"] is not None
+                        and lo_hi[0] <= r["value"]/1000 <= lo_hi[1]]
+            a.plot([r["value"]/1000 for r in searched], [r["runout"] for r in searched], "^", color="C1", ms=5,
+                   mfc="none", label="slideMPM runout, backAnalysis.md's search")
         a.axhspan(data["target"]*(1 - data["tolerance"]), data["target"]*(1 + data["tolerance"]), color="grey",
                   alpha=0.3, label="observed %g m +- %g %%" % (data["target"], 100*data["tolerance"]))
         a.set_xlabel("s_uo [kPa]")
         a.set_ylabel("travel [m]")
         a.set_xlim(*lo_hi)
-        a.set_title("the escarpment, %g-%g kPa" % lo_hi, fontsize=9)
+        a.set_title("the escarpment, %g-%g kPa%s" % (lo_hi + ("" if k == 0 else ", slideMPM",)), fontsize=9)
         a.grid(alpha=0.3)
     ax[0].legend(fontsize=7)
+    ax[1].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "massFront.png"), dpi=110)
     print("Written: %s" % os.path.join(HERE, "massFront.md"))
