@@ -170,8 +170,9 @@ def report(data):
     for m in ("slideDAM", "slideMPM"):
         b = data["backAnalysis"][m]
         lines.append("| %s | %.2f kPa | %s | %d, %.0f s |" % (
-            m, stored[m]["result"]["best"]["value"]/1000, "%.2f kPa (mass front %.1f m)" % (b["value"]/1000, b["observed"])
-            if b["outcome"] == "matched" else b["message"], len(b["runs"]), b["wall"]))
+            m, stored[m]["result"]["best"]["value"]/1000,
+            "%.2f kPa (mass front %.1f m)" % (b["value"]/1000, b["observed"]) if b["outcome"] == "matched"
+            else b["message"], len(b["runs"]), b["wall"]))
     again = data["backAnalysis"].get("runoutMPM")
     if again:
         sc = again.get("scatter") or {}
