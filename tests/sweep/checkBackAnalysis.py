@@ -212,7 +212,8 @@ def main():
             (["-find", "base/s_b", "1", "2", "-match", "runout", "x"], ["'x' is not a number"]),
             (["-find", "base/s_b", "1", "2"], ["-match is required"]),
             (["-find", "base/s_b", "1", "2", "-match", "runout", "5", "-tolerance", "2"], ["-tolerance 2"]),
-            (["-find", "base/s_b", "1", "2", "-match", "runout", "5", "-method", "slideFoam"], ["-method slideFoam"]),
+            (["-find", "base/s_b", "1", "2", "-match", "runout", "5", "-method", "slideFEM"],
+             ["-method slideFEM", "slideFoam"]),
             (["-find", "base/s_b", "1", "2", "-match", "runout", "5", "-set", "base/s_b", "3"], ["given twice"])]:
         rc, stdout, stderr = tool("-case", CASE, "-dir", out, *extra)
         check(rc == 1 and all(w in stderr for w in words) and not os.path.exists(out),

@@ -169,7 +169,7 @@ def main():
         (["-sample", "base/s_b", "gamma", "1", "2", "-samples", "5"], ["-sample takes", "uniform"]),
         (["-sample", "base/s_b", "uniform", "1", "2"], ["-samples N"]),
         (["-vary", "base/s_b", "1", "-sample", "base/angle", "uniform", "1", "2", "-samples", "3"], ["not both"]),
-        (["-vary", "base/s_b", "1", "-method", "slideFoam"], ["-method slideFoam"]),
+        (["-vary", "base/s_b", "1", "-method", "slideFEM"], ["-method slideFEM", "slideFoam"]),
         (["-vary", "base/s_b", "1", "-np", "0"], ["-np 0"]),
         (["-vary", "base/s_b", "1", "-bogus"], ["unknown option '-bogus'"]),
     ]:

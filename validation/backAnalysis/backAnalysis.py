@@ -11,16 +11,19 @@ slideMPM each solve for the entry that reproduces the observation:
   again, and the end at 1200 s again; slideMPM run once with slideDAM's answer (check_at);
 - the Mediterranean escarpment: the intact strength s_uo for the observed 420 m (the paper's laboratory value is
   15 kPa, with which its DAM ran 462 m and its MPM 444 m);
-- Table 1 Case 3, whose s_uo is garbled in the paper: the s_uo for the paper's 19.7 m (DAM and MPM), each method
-  run to rest (the scene's 600 s).
+- Table 1 Case 3, whose s_uo is garbled in the paper: the s_uo for the paper's 19.7 m (DAM and MPM) and 19.4 m (CFD,
+  asked of slideFoam since session 82: two or three minutes a run on 2 MPI ranks, its search after the others'),
+  each method run to rest (the scene's 600 s).
 
-Each at the tutorial's set-up (Case 3: Table 1's, slideDAM 800 columns, slideMPM H0/10 with 4x4 particles), the
+Each at the tutorial's set-up (Case 3: Table 1's, slideDAM 800 columns, slideMPM H0/10 with 4x4 particles, slideFoam
+H0/10 with H0/40 on the base and the tutorials' maxDeltaT 0.05 s), the
 tolerance 1 % of the target (0.2 % for C_F, to which the runout is nearly blind). slideMPM's searches run two at a
 time on one thread each. Writes backAnalysis.json, backAnalysis.md and backAnalysis.png here; the runs stay in
-platforms/validation-work/backAnalysis. About an hour on 2 cores.
+platforms/validation-work/backAnalysis. About an hour and a half on 2 cores.
 
-Usage: validation/backAnalysis/backAnalysis.py [--stored]
+Usage: validation/backAnalysis/backAnalysis.py [--stored] [--methods M1,M2]
   --stored: redraw backAnalysis.md and backAnalysis.png from backAnalysis.json without running
+  --methods: run only these methods' searches and keep the others' from backAnalysis.json
 """
 import os
 import subprocess
@@ -37,7 +40,7 @@ from plotting import pyplot  # noqa: E402
 from runner import run_method, run_tool, slidefoam_env  # noqa: E402
 
 TOLERANCE = 0.01
-METHODS = ("slideDAM", "slideMPM")
+METHODS = ("slideDAM", "slideMPM", "slideFoam")
 STUDIES = [
     {"name": "Finneidfjord block, constant s_b", "tutorial": "tutorials/finneidfjord", "constantResistance": 100,
      "find": ("base/s_b", 20.0, 160.0), "unit": "Pa", "set": {"system/controlDict:endTime": "1200"},
@@ -49,10 +52,12 @@ STUDIES = [
      "target": {"slideDAM": 1380.0, "slideMPM": 1380.0},
      "paper": "0.003 taken (De Blasio et al. 2004): 1381 m (DAM), 1400 m (MPM)", "rigid": "C_F"},
     {"name": "Mediterranean escarpment", "tutorial": "tutorials/mediterraneanEscarpment",
-     "find": ("rheology/s_uo", 8000.0, 30000.0), "unit": "Pa", "target": {"slideDAM": 420.0, "slideMPM": 420.0},
+     "find": ("rheology/s_uo", 8000.0, 30000.0), "unit": "Pa",
+     "target": {"slideDAM": 420.0, "slideMPM": 420.0},
      "paper": "15 kPa measured: 462 m (DAM), 444 m (MPM)"},
     {"name": "Table 1 Case 3", "tutorial": "tutorials/table1/case03", "mpmCost": 3,
-     "find": ("rheology/s_uo", 1000.0, 3000.0), "unit": "Pa", "target": {"slideDAM": 19.7, "slideMPM": 19.7},
+     "find": ("rheology/s_uo", 1000.0, 3000.0), "unit": "Pa",
+     "target": {"slideDAM": 19.7, "slideMPM": 19.7, "slideFoam": 19.4},
      "paper": "garbled; table1.csv reads 1 kPa"},
 ]
 
@@ -131,7 +136,13 @@ def check_at(case, study, value, out):
             "wall": time.time() - t0, "runs": [row]}
 
 
-def measure():
+def methods_of(study):
+    """The methods a study asks: those it has a target for."""
+    return [m for m in METHODS if m in study["target"]]
+
+
+def measure(methods, stored):
+    """Every study's searches by the given methods; the other methods' entries kept from the stored data."""
     from concurrent.futures import ThreadPoolExecutor
     work = os.path.join(TOP, "platforms", "validation-work", "backAnalysis")
     data, cases = [], []
@@ -151,26 +162,32 @@ def measure():
                                           *study["find"][1:])
         if study.get("constantResistance"):
             constant_resistance(case, study["constantResistance"])
+        old = [e for e in stored if e["study"] == study["name"]]
+        for method in methods_of(study):
+            if method not in methods and old and method in old[0]:
+                entry[method] = old[0][method]
         data.append(entry)
         cases.append((study, folder, case))
+    wanted = [(k, m) for k, study in enumerate(STUDIES) for m in methods_of(study) if m in methods]
     # slideDAM's searches take seconds; slideMPM's, on slides of a few thousand particles, run two at a time on one
-    # thread each, which the small problems use about as well as two threads.
-    jobs = [(k, "slideDAM", None) for k in range(len(STUDIES))]
+    # thread each, which the small problems use about as well as two threads; slideFoam's, on 2 MPI ranks, after.
+    dam_jobs = [(k, m, None) for k, m in wanted if m == "slideDAM"]
     # The longest (Table 1 Case 3's runs to rest at 600 s, 4x4 particles in H0/10 cells) first.
-    jobs += [(k, "slideMPM", 1) for k in sorted(range(len(STUDIES)), key=lambda k: -STUDIES[k].get("mpmCost", 1))]
+    mpm_jobs = [(k, m, 1) for k, m in sorted(wanted, key=lambda km: -STUDIES[km[0]].get("mpmCost", 1))
+                if m == "slideMPM"]
+    cfd_jobs = [(k, m, 2) for k, m in wanted if m == "slideFoam"]
 
     def one(job):
         k, method, threads = job
         study, folder, case = cases[k]
         if method == "slideMPM" and study.get("mpmCheckOnly"):
-            dam = [f for (j, m, _), f in done if j == k and m == "slideDAM"][0]["result"]
+            dam = ([f for (j, m, _), f in done if j == k and m == "slideDAM"] or [data[k]["slideDAM"]])[0]["result"]
             return job, check_at(case, study, dam["best"]["value"], os.path.join(folder, "slideMPMcheck"))
         return job, back_analyse(case, method, study, os.path.join(folder, method), threads)
-    done = []
-    with ThreadPoolExecutor(max_workers=1) as pool:
-        done += list(pool.map(one, jobs[:len(STUDIES)]))
+    done = [one(job) for job in dam_jobs]
     with ThreadPoolExecutor(max_workers=2) as pool:
-        done += list(pool.map(one, jobs[len(STUDIES):]))
+        done += list(pool.map(one, mpm_jobs))
+    done += [one(job) for job in cfd_jobs]
     for (k, method, _), found in done:
         study, entry = STUDIES[k], data[k]
         entry[method] = found
@@ -214,7 +231,7 @@ def write(data):
              "sensitivity | scatter at the answer [m] | the tolerance leaves | rigid block's runout with it [m] |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for e in data:
-        for method in METHODS:
+        for method in [m for m in METHODS if m in e]:
             f = e[method]
             r = f["result"]
             cells = [e["study"], "`%s`" % e["find"][0], "%g +- %g %%" % (e["target"][method], 100*e["tolerance"]),
@@ -238,14 +255,15 @@ def write(data):
             cells.append("-" if f.get("rigidRunout") is None else "%.1f (its runout %+.2f %%)" % (
                 f["rigidRunout"], 100*(r["best"]["observed"]/f["rigidRunout"] - 1)))
             lines.append("| " + " | ".join(cells) + " |")
-    lines += ["", "slideMPM's answer over slideDAM's: " + "; ".join(
-        "%s %s" % (e["study"], "%.3f" % (found(e, "slideMPM")/found(e, "slideDAM"))
-                   if found(e, "slideMPM") and found(e, "slideDAM") else "-") for e in data) + ".",
+    lines += [""] + ["%s's answer over slideDAM's: " % method + "; ".join(
+        "%s %s" % (e["study"], "%.3f" % (found(e, method)/found(e, "slideDAM"))
+                   if found(e, method) and found(e, "slideDAM") else "-") for e in data if method in e) + "."
+        for method in METHODS[1:] if any(method in e for e in data)] + [
               "The rigid block's exact answers (its equation of motion solved for the target): " + "; ".join(
                   "%s %s" % (e["study"], value_text(e["rigid"], e["unit"])) for e in data if e.get("rigid")) + "."]
     lines += ["", "Runs of each search (entry: runout [m]; * still moving at the end time):", ""]
     for e in data:
-        for method in METHODS:
+        for method in [m for m in METHODS if m in e]:
             lines.append("- %s, %s: %s" % (e["study"], method, "; ".join(
                 "%s: %s%s" % (value_text(r["value"], e["unit"], 6), "failed" if r["runout"] is None else
                               "%.1f" % r["runout"], "" if r["atRest"] in (True, None) else "*")
@@ -259,6 +277,8 @@ def write(data):
     for ax, e in zip(axes, data):
         scale = 1000.0 if e["unit"] == "Pa" and e["find"][2] >= 1000 else 1.0
         for k, method in enumerate(METHODS):
+            if method not in e:
+                continue
             runs = sorted((r for r in e[method]["runs"] if r["runout"] is not None), key=lambda r: r["value"])
             ax.plot([r["value"]/scale for r in runs], [r["runout"] for r in runs], "o-", ms=4, lw=0.8,
                     color="C%d" % k, label=method)
@@ -267,7 +287,8 @@ def write(data):
                 ax.axvline(v/scale, color="C%d" % k, ls=":", lw=1)
         if e.get("rigid") is not None:
             ax.axvline(e["rigid"]/scale, color="k", ls="--", lw=0.8, label="rigid block")
-        ax.axhline(e["target"]["slideDAM"], color="C2", lw=1, label="target")
+        for t in sorted(set(e["target"].values())):
+            ax.axhline(t, color="C2", lw=1, label="target %g m" % t)
         unit = "kPa" if scale == 1000.0 else e["unit"]
         ax.set(xlabel="%s%s" % (e["find"][0], " [%s]" % unit if unit else ""), ylabel="runout [m]",
                title=e["study"])
@@ -279,7 +300,20 @@ def write(data):
 
 
 def main():
-    write(options.measured_or_stored(__doc__, os.path.join(HERE, "backAnalysis.json"), measure, fine=False))
+    import json
+    args = options.parse(__doc__, flags=("--stored",), valued=("--methods",))
+    path = os.path.join(HERE, "backAnalysis.json")
+    stored = json.load(open(path)) if os.path.isfile(path) else []
+    if args.get("--stored"):
+        return write(stored)
+    methods = args["--methods"].split(",") if args.get("--methods") else list(METHODS)
+    unknown = [m for m in methods if m not in METHODS]
+    if unknown:
+        sys.exit("--methods: %s is not one of %s" % (", ".join(unknown), ", ".join(METHODS)))
+    data = measure(methods, stored)
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1)
+    write(data)
 
 
 if __name__ == "__main__":

@@ -101,7 +101,8 @@ def make_case(template, work, name, scene=None, control=None, cfd=None, dicts=No
 
 def run(case, *cmd, log=None, check=True):
     """Runs an application in a case, its output in log.<app> as runApplication does."""
-    env = dict(slidefoam_env())
+    # PWD the case's, or OpenFOAM warns that it is not the working directory.
+    env = dict(slidefoam_env(), PWD=os.path.abspath(case))
     log = log or "log." + os.path.basename(cmd[0])
     with open(os.path.join(case, log), "w") as f:
         p = subprocess.run(list(cmd), cwd=case, stdout=f, stderr=subprocess.STDOUT, env=env)
@@ -128,6 +129,52 @@ def run_slidefoam(case, processors=1, app="slideFoam"):
     run(case, "mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(processors), exe, "-parallel",
         log="log." + app)
     return run(case, "reconstructPar", "-latestTime")
+
+
+def run_sized(case, processors=1, retries=2):
+    """slideFoam on a scene case as its Allrun runs it: slideDAM first where system/cfdDict gives no reach (its runout
+    and spreading size the mesh), then slideFoamCase, blockMesh and slideFoam. slideDAM's reach bounds neither end of
+    the CFD's (Table 1 Case 8's block slides on past slideDAM's 47 m; Case 4's rear spreads upslope past slideDAM's):
+    where the slide leaves the mesh, the case is regenerated with cfdDict's reach (or behind) three times the travel
+    it had then, at least twice the mesh that was too short, and rerun, up to `retries` times. Returns None, or
+    the reason the last try failed (its step and the end of its log)."""
+    cfd = os.path.join(case, "system", "cfdDict")
+    if not os.path.isfile(cfd):
+        open(cfd, "w").close()
+    from slidefoam_io import read_runout
+    if get_entry(cfd, "reach") is None:
+        try:
+            run(case, which("slideDAM"), "-case", ".")
+        except RuntimeError as e:
+            return str(e)[-1500:]
+    for attempt in range(retries + 1):
+        try:
+            prepare(case)
+            run_slidefoam(case, processors)
+            return None
+        except RuntimeError as e:
+            log = os.path.join(case, "log.slideFoam")
+            log = open(log, errors="replace").read() if os.path.isfile(log) else ""
+            ends = [(key, phrase) for key, end, phrase in (
+                ("reach", "downslope", "reach ahead of the front"), ("behind", "upslope", "mesh behind the rear"))
+                if "%s end of the mesh" % end in log]
+            if attempt == retries or not ends:
+                return str(e)[-1500:]
+            key, phrase = ends[0]
+            # The travel at the last write (runout.dat has no row at the failure itself).
+            r = read_runout(os.path.join(case, "postProcessing", "slideFoam", "runout.dat"))
+            travel = r["front"][-1] if key == "reach" else r["rear"][0] - r["rear"][-1]
+            mesh = float(re.search(r"%s ([0-9.eE+-]+) m" % phrase,
+                                   open(os.path.join(case, "log.slideFoamCase")).read()).group(1))
+            longer = max(3.0*travel, 2.0*mesh)
+            print("%s: the slide left the mesh (%s %.4g m); regenerating it with %s %.4g m"
+                  % (case, key, mesh, key, longer), flush=True)
+            set_entry(cfd, key, "%.6g" % longer, add=True)
+            # Afresh from the start on the new mesh: the fields and records of the run that left the old one go.
+            for stale in time_dirs(case) + ["postProcessing/slideFoam"]:
+                shutil.rmtree(os.path.join(case, stale))
+            subprocess.run(["bash", "-c", "rm -rf processor*"], cwd=case, check=True)
+    return None
 
 
 def time_dirs(case):

@@ -13,10 +13,11 @@ import shutil
 import subprocess
 import time
 
-from runner import slidefoam_env
+from runner import slidefoam_env, which
 from slidefoam_io import failure_reason, read_summary
 
 SCENE = "constant/sceneProperties"
+METHODS = ("slideDAM", "slideMPM", "slideFoam")
 SITE_FIELDS = [("arrival_time_s", "arrival [s]"), ("peak_speed_m_s", "peak speed [m/s]"),
                ("peak_momentum_flux_m3_s2", "peak h V^2 [m3/s2]"), ("max_thickness_m", "largest thickness [m]"),
                ("final_thickness_m", "final thickness [m]")]
@@ -56,9 +57,20 @@ def check_keys(case, keys):
                  % (full, path, key, key))
 
 
-def tree_digest(case, exe):
+def binaries(method):
+    """The executables and libraries a method's run depends on: slideFoam's run also runs slideDAM (whose runout
+    sizes its mesh) and slideFoamCase, and loads the project's OpenFOAM library."""
+    if method != "slideFoam":
+        return [which(method)]
+    env = slidefoam_env()
+    libs = [os.path.join(d, "libslideFoamModels.so") for d in (env.get("FOAM_USER_LIBBIN"), env.get("FOAM_LIBBIN"))
+            if d]
+    return [which(app) for app in ("slideFoam", "slideFoamCase", "slideDAM")] + [p for p in libs if os.path.isfile(p)][:1]
+
+
+def tree_digest(case, exes):
     """What a run's result depends on besides its values: the case's constant/ and system/ files and the method's
-    binary."""
+    binaries."""
     h = hashlib.sha256()
     for sub in ("constant", "system"):
         root = os.path.join(case, sub)
@@ -69,8 +81,9 @@ def tree_digest(case, exe):
                 h.update(os.path.relpath(p, case).encode())
                 with open(p, "rb") as f:
                     h.update(f.read())
-    with open(exe, "rb") as f:
-        h.update(f.read())
+    for exe in exes:
+        with open(exe, "rb") as f:
+            h.update(f.read())
     return h.hexdigest()
 
 
@@ -103,6 +116,11 @@ def prepare_run(case, run_dir, method, fixed, values, digest):
 
 
 def run_one(run_dir, exe, method, threads):
+    """One variant's run; threads: slideMPM's OpenMP threads, slideFoam's MPI ranks. Returns (exit status, wall)."""
+    if method == "slideFoam":
+        from cfdcase import run_sized
+        start = time.time()
+        return (0 if run_sized(run_dir, threads or 1) is None else 1), time.time() - start
     env = dict(slidefoam_env())
     if threads:
         env["OMP_NUM_THREADS"] = str(threads)
@@ -119,7 +137,10 @@ def collect(run_dir, method, values, index):
            "values": values}
     summary = os.path.join(run_dir, "postProcessing", method, "summary.json")
     if not os.path.isfile(summary):
-        row["failed"] = failure_reason(run_dir, method) or "did not run"
+        # slideFoam's run starts with slideDAM's, whose runout sizes its mesh.
+        dam_failed = method == "slideFoam" and not os.path.isfile(
+            os.path.join(run_dir, "postProcessing", "slideDAM", "summary.json")) and failure_reason(run_dir, "slideDAM")
+        row["failed"] = dam_failed or failure_reason(run_dir, method) or "did not run"
         return row
     j = read_summary(summary)
     with open(os.path.join(run_dir, "log." + method), errors="replace") as f:
