@@ -24,7 +24,7 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, set_entry, set_method_entries  # noqa: E402
+from cfdcase import get_entry, make_case, run, run_regenerating, set_entry, set_method_entries  # noqa: E402
 from paper import CASE1_RATE_FREE_SCENE, paper_table, wall_function_acts  # noqa: E402
 from runner import run_method, which  # noqa: E402
 from slidefoam_io import base_cells, read_summary, read_runout, unresolved  # noqa: E402
@@ -106,25 +106,16 @@ def run_case(c, cells, processors, work, mesh, scene_end=False, retries=2):
         # The CFD's regularised plug creeps where the deposit is near its yield
         # thickness long after the front has stopped: run as long as the DAM took.
         set_entry(os.path.join(d, "system", "controlDict"), "endTime", math.ceil(dam["end_time_s"]))
-    try:
-        prepare(d)
-        run_slidefoam(d, processors)
-    except RuntimeError as e:
-        log = open(os.path.join(d, "log.slideFoam")).read() if os.path.exists(os.path.join(d, "log.slideFoam")) \
-            else ""
-        runout = os.path.join(d, "postProcessing", "slideFoam", "runout.dat")
-        if retries > 0 and ("downslope end of the mesh" in log or "upslope end of the mesh" in log):
-            # slideDAM's runout and spreading, which size the mesh, bound neither end of the CFD's (Case 8's
-            # block slides on past slideDAM's 47 m; Case 4's rear spreads upslope past slideDAM's): regenerate
-            # with three times the travel the slide had when it left.
-            r = read_runout(runout)
-            key, travel = ("reach", r["front"][-1]) if "downslope end" in log else ("behind", r["rear"][0] - r["rear"][-1])
-            # At least twice the mesh that was too short, where the slide left it at once.
-            longer = max(3.0*travel, 2.0*(mesh.get(key) or 0.0))
-            print("Case %d H0/%d: the slide left the mesh %.1f m from where it started; rerunning with %s %.1f m"
-                  % (c, cells, travel, key, longer), flush=True)
-            return run_case(c, cells, processors, work, dict(mesh, **{key: longer}), scene_end, retries - 1)
-        return dict({"case": c, "cells": cells, "failed": str(e)[-600:], "reason": fatal_error(log)}, **mesh)
+    failed = run_regenerating(d, processors, retries)
+    # A mesh regenerated longer says how long in its cfdDict.
+    for key in ("reach", "behind"):
+        value = get_entry(os.path.join(d, "system", "cfdDict"), key)
+        if value is not None:
+            mesh = dict(mesh, **{key: value})
+    if failed:
+        log = os.path.join(d, "log.slideFoam")
+        log = open(log).read() if os.path.exists(log) else ""
+        return dict({"case": c, "cells": cells, "failed": failed[-600:], "reason": fatal_error(log)}, **mesh)
     return case_row(c, cells, d, dam["runout_m"], mesh)
 
 

@@ -133,20 +133,26 @@ def run_slidefoam(case, processors=1, app="slideFoam"):
 
 def run_sized(case, processors=1, retries=2):
     """slideFoam on a scene case as its Allrun runs it: slideDAM first where system/cfdDict gives no reach (its runout
-    and spreading size the mesh), then slideFoamCase, blockMesh and slideFoam. slideDAM's reach bounds neither end of
-    the CFD's (Table 1 Case 8's block slides on past slideDAM's 47 m; Case 4's rear spreads upslope past slideDAM's):
-    where the slide leaves the mesh, the case is regenerated with cfdDict's reach (or behind) three times the travel
-    it had then, at least twice the mesh that was too short, and rerun, up to `retries` times. Returns None, or
-    the reason the last try failed (its step and the end of its log)."""
+    and spreading size the mesh), then run_regenerating. Returns None, or why it failed."""
     cfd = os.path.join(case, "system", "cfdDict")
     if not os.path.isfile(cfd):
         open(cfd, "w").close()
-    from slidefoam_io import read_runout
     if get_entry(cfd, "reach") is None:
         try:
             run(case, which("slideDAM"), "-case", ".")
         except RuntimeError as e:
             return str(e)[-1500:]
+    return run_regenerating(case, processors, retries)
+
+
+def run_regenerating(case, processors=1, retries=2):
+    """slideFoamCase, blockMesh and slideFoam. slideDAM's reach bounds neither end of the CFD's (Table 1 Case 8's
+    block slides on past slideDAM's 47 m; Case 4's rear spreads upslope past slideDAM's): where the slide leaves the
+    mesh, the case is regenerated with cfdDict's reach (or behind) three times the travel it had at the last write, at
+    least twice the mesh that was too short, and run afresh, up to `retries` times. Returns None, or the reason the
+    last try failed (its step and the end of its log)."""
+    from slidefoam_io import read_runout
+    cfd = os.path.join(case, "system", "cfdDict")
     for attempt in range(retries + 1):
         try:
             prepare(case)
