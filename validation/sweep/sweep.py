@@ -11,11 +11,15 @@ sampling reference:
   uniform from 1/60 to 1/20 (S_t 40 measured); the tutorial's pipeline and cable (hypothetical). And slideDAM
   over a grid of s_uo from 15 to 40 kPa: the strength from which its slab stands.
 
-slideMPM at the tutorials' fast set-ups, without field output, one run at a time on 2 threads. Writes sweep.json,
-sweep.md and sweep.png here. ~40 min on 2 cores.
+And slideFoam over Case 2's scenes too (since session 82): the CFD's probabilistic answer beside the other two.
 
-Usage: validation/sweep/sweep.py [--stored]
+slideMPM at the tutorials' fast set-ups, without field output, one run at a time on 2 threads; slideFoam at its
+tutorial's (H0/10 with H0/40 on the base, maxDeltaT 0.05 s), one run at a time on 2 MPI ranks. Writes sweep.json,
+sweep.md and sweep.png here. ~70 min on 2 cores.
+
+Usage: validation/sweep/sweep.py [--stored] [--labels DAM,MPM,CFD,"DAM reference"]
   --stored: redraw sweep.md and sweep.png from sweep.json without running
+  --labels: run only these sweeps (and the stand grid with DAM) and keep the others from sweep.json
 """
 import json
 import os
@@ -33,12 +37,18 @@ from runner import run_tool, slidefoam_env  # noqa: E402
 CASES = [
     {"name": "Table 1 Case 2", "tutorial": "tutorials/table1/case02", "sites": [("d40", 80.0), ("d60", 100.0)],
      "samples": [("rheology/s_uo", "lognormal", 500, 0.25), ("base/angle", "uniform", 2.93, 3.93)],
-     "n": 24, "nReference": 256},
+     "n": 24, "nReference": 256, "cfd": True},
     {"name": "Mediterranean escarpment", "tutorial": "tutorials/mediterraneanEscarpment", "sites": None,
      "samples": [("rheology/s_uo", "lognormal", 15000, 0.3), ("rheology/deltaRem", "uniform", 0.0167, 0.05)],
      "n": 20, "nReference": 512, "standGrid": list(range(15000, 40001, 1000))},
 ]
 SEED = 1
+LABELS = ("DAM", "MPM", "CFD", "DAM reference")
+METHOD = {"DAM": "slideDAM", "MPM": "slideMPM", "CFD": "slideFoam", "DAM reference": "slideDAM"}
+
+
+def labels_of(spec):
+    return [label for label in LABELS if label != "CFD" or spec.get("cfd")]
 
 
 def sweep(case, out, method, n, samples):
@@ -63,7 +73,8 @@ def stand_grid(case, values):
         return [[float(r["values"]["rheology/s_uo"]), r.get("runout_m")] for r in json.load(f)["runs"]]
 
 
-def measure():
+def measure(labels, stored):
+    """The sweeps of the given labels; the others' kept from the stored data."""
     work = os.path.join(TOP, "platforms", "validation-work", "sweep")
     data = []
     for spec in CASES:
@@ -74,13 +85,18 @@ def measure():
         if spec["sites"]:
             set_sites(case, spec["sites"])
         entry = {"case": spec["name"], "tutorial": spec["tutorial"], "samples": spec["samples"], "seed": SEED}
-        for label, method, n in (("DAM", "slideDAM", spec["n"]), ("MPM", "slideMPM", spec["n"]),
-                                 ("DAM reference", "slideDAM", spec["nReference"])):
-            entry[label] = sweep(case, os.path.join(case, "sweep" + label.replace(" ", "")), method, n,
+        old = ([e for e in stored if e["case"] == spec["name"]] or [{}])[0]
+        for label in labels_of(spec):
+            if label not in labels:
+                if label in old:
+                    entry[label] = old[label]
+                continue
+            n = spec["nReference"] if label == "DAM reference" else spec["n"]
+            entry[label] = sweep(case, os.path.join(case, "sweep" + label.replace(" ", "")), METHOD[label], n,
                                  spec["samples"])
             print("%s, %s over %d scenes: %.0f s" % (spec["name"], label, n, entry[label]["wall"]), flush=True)
         if spec.get("standGrid"):
-            entry["standGrid"] = stand_grid(case, spec["standGrid"])
+            entry["standGrid"] = stand_grid(case, spec["standGrid"]) if "DAM" in labels else old.get("standGrid")
         data.append(entry)
     return data
 
@@ -92,18 +108,18 @@ def fmt(v, f="%.1f"):
 MOVED = 1.0   # [m]: a front that travelled less stood; its slide did not fail
 
 
-def paired(entry):
-    """DAM / MPM runout ratios of the scenes both ran (the same values, one seed) where both slides moved, and
-    the scenes where only one of them did: ([ratios], {method: [s_uo of the scenes where it alone stood]})."""
-    ratios, stood = [], {"DAM": [], "MPM": []}
-    for d, m in zip(entry["DAM"]["runs"], entry["MPM"]["runs"]):
+def paired(entry, a="DAM", b="MPM"):
+    """a / b runout ratios of the scenes both ran (the same values, one seed) where both slides moved, and
+    the scenes where only one of them did: ([ratios], {label: [s_uo of the scenes where it alone stood]})."""
+    ratios, stood = [], {a: [], b: []}
+    for d, m in zip(entry[a]["runs"], entry[b]["runs"]):
         assert d["values"] == m["values"]
         if d["runout"] is None or m["runout"] is None:
             continue
         if d["runout"] >= MOVED and m["runout"] >= MOVED:
             ratios.append(d["runout"]/m["runout"])
         elif d["runout"] >= MOVED or m["runout"] >= MOVED:
-            stood["MPM" if d["runout"] >= MOVED else "DAM"].append(float(d["values"]["rheology/s_uo"]))
+            stood[b if d["runout"] >= MOVED else a].append(float(d["values"]["rheology/s_uo"]))
     return sorted(ratios), stood
 
 
@@ -115,14 +131,15 @@ def write(data):
              "in metres of front travel; P10 / P50 / P90 over the runs; a site's probability: the share of runs "
              "whose front passed it. slideDAM's `fast` and slideMPM's `fast` set-ups (the tutorials'), slideMPM "
              "without field output on 2 threads." % SEED, ""]
+    heads = {"DAM": "slideDAM, %d scenes", "MPM": "slideMPM, the same %d", "CFD": "slideFoam, the same %d",
+             "DAM reference": "slideDAM, %d scenes"}
     for entry in data:
-        labels = ["DAM", "MPM", "DAM reference"]
+        labels = [k for k in LABELS if k in entry]
         n = {k: entry[k]["statistics"]["runs"] for k in labels}
         lines += ["## %s (`%s`)" % (entry["case"], entry["tutorial"]), "",
                   "Drawn: " + "; ".join("`%s` %s %s" % (k, d, " ".join("%g" % v for v in p))
                                        for k, d, *p in entry["samples"]) + ".", "",
-                  "| | slideDAM, %d scenes | slideMPM, the same %d | slideDAM, %d scenes |" % (
-                      n["DAM"], n["MPM"], n["DAM reference"]), "|---|---|---|---|"]
+                  "| | " + " | ".join(heads[k] % n[k] for k in labels) + " |", "|---|" + "---|"*len(labels)]
         st = {k: entry[k]["statistics"] for k in labels}
         lines.append("| finished / still moving at the end / failed | " + " | ".join(
             "%d / %d / %d" % (st[k]["finished"], st[k]["still_moving"], st[k]["failed"]) for k in labels) + " |")
@@ -145,6 +162,12 @@ def write(data):
                       "slideDAM's runout over slideMPM's is %.2f at the median, %.2f to %.2f over the %d pairs; "
                       "slideDAM runs further in %d of them." % (MOVED, r[len(r)//2], r[0], r[-1], len(r),
                                                                sum(1 for x in r if x > 1))]
+        for other in ("MPM", "DAM"):
+            rc = paired(entry, "CFD", other)[0] if "CFD" in entry else []
+            if rc:
+                lines += ["", "slideFoam's runout over slide%s's, scene by scene: %.2f at the median, %.2f to %.2f "
+                          "over the %d pairs; slideFoam runs further in %d of them." % (
+                              other, rc[len(rc)//2], rc[0], rc[-1], len(rc), sum(1 for x in rc if x > 1))]
         grid = entry.get("standGrid")
         if grid:
             ran = [v for v, x in grid if x is not None and x >= MOVED]
@@ -173,26 +196,36 @@ def write(data):
     plt = pyplot()
     fig, ax = plt.subplots(len(data), 2, figsize=(11, 4*len(data)), squeeze=False)
     for row, entry in zip(ax, data):
-        for label, style in (("DAM", "C0"), ("MPM", "C1"), ("DAM reference", "C0:")):
+        for label, style in (("DAM", "C0"), ("MPM", "C1"), ("CFD", "C2"), ("DAM reference", "C0:")):
+            if label not in entry:
+                continue
             x = sorted(r["runout"] for r in entry[label]["runs"] if r["runout"] is not None)
             n = len(x)
             row[0].step(x, [(n - i)/n for i in range(n)], style[:2], ls=style[2:] or "-", where="post",
-                        label="%s, %d scenes" % (label.replace("DAM", "slideDAM").replace("MPM", "slideMPM"), n))
+                        label="%s, %d scenes" % (label.replace("DAM", "slideDAM").replace("MPM", "slideMPM")
+                                                 .replace("CFD", "slideFoam"), n))
         for i, site in enumerate(entry["DAM"]["statistics"]["sites"]):
             row[0].axvline(site["distance_from_initial_front_m"], color="grey", ls="--", lw=0.8)
             row[0].annotate(site["name"], (site["distance_from_initial_front_m"], 1.0), fontsize=7, color="grey",
                             rotation=90, va="top", ha="right")
         row[0].set(xlabel="runout [m]", ylabel="share of runs reaching at least x", title=entry["case"])
         row[0].legend(fontsize=8)
-        pairs = [(d["runout"], m["runout"]) for d, m in zip(entry["DAM"]["runs"], entry["MPM"]["runs"])
-                 if d["runout"] is not None and m["runout"] is not None]
-        if pairs:
-            row[1].scatter([m for _, m in pairs], [d for d, _ in pairs], s=16)
-            lim = max(max(p) for p in pairs)*1.05
+        lim = 0.0
+        for label, colour in (("DAM", "C0"), ("CFD", "C2")):
+            if label not in entry:
+                continue
+            pairs = [(d["runout"], m["runout"]) for d, m in zip(entry[label]["runs"], entry["MPM"]["runs"])
+                     if d["runout"] is not None and m["runout"] is not None]
+            if pairs:
+                row[1].scatter([m for _, m in pairs], [d for d, _ in pairs], s=16, color=colour,
+                               label=METHOD[label])
+                lim = max(lim, max(max(p) for p in pairs)*1.05)
+        if lim > 0:
             row[1].plot([0, lim], [0, lim], "k:", lw=0.8)
             row[1].set(xlim=(0, lim), ylim=(0, lim))
-        row[1].set(xlabel="slideMPM runout [m]", ylabel="slideDAM runout [m]",
-                   title="the same scenes, paired")
+            row[1].legend(fontsize=8)
+        row[1].set(xlabel="slideMPM runout [m]", ylabel="its runout [m]",
+                   title="the same scenes, paired with slideMPM's")
         for a in row:
             a.grid(alpha=0.3)
     fig.tight_layout()
@@ -200,7 +233,19 @@ def write(data):
 
 
 def main():
-    write(options.measured_or_stored(__doc__, os.path.join(HERE, "sweep.json"), measure, fine=False))
+    args = options.parse(__doc__, flags=("--stored",), valued=("--labels",))
+    path = os.path.join(HERE, "sweep.json")
+    stored = json.load(open(path)) if os.path.isfile(path) else []
+    if args.get("--stored"):
+        data = stored
+    else:
+        labels = args["--labels"].split(",") if args.get("--labels") else list(LABELS)
+        if any(label not in LABELS for label in labels):
+            sys.exit("--labels: each one of %s" % ", ".join(LABELS))
+        data = measure(labels, stored)
+        with open(path, "w") as f:
+            json.dump(data, f, indent=1)
+    write(data)
     print("Written: %s" % os.path.join(HERE, "sweep.md"))
     return 0
 
