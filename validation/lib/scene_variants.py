@@ -65,7 +65,8 @@ def binaries(method):
     env = slidefoam_env()
     libs = [os.path.join(d, "libslideFoamModels.so") for d in (env.get("FOAM_USER_LIBBIN"), env.get("FOAM_LIBBIN"))
             if d]
-    return [which(app) for app in ("slideFoam", "slideFoamCase", "slideDAM")] + [p for p in libs if os.path.isfile(p)][:1]
+    return [which(app) for app in ("slideFoam", "slideFoamCase", "slideDAM")] \
+        + [p for p in libs if os.path.isfile(p)][:1]
 
 
 def tree_digest(case, exes):
