@@ -135,9 +135,7 @@ def run_sized(case, processors=1, retries=2):
     """slideFoam on a scene case as its Allrun runs it: slideDAM first where system/cfdDict gives no reach (its runout
     and spreading size the mesh), then run_regenerating. Returns None, or why it failed."""
     cfd = os.path.join(case, "system", "cfdDict")
-    if not os.path.isfile(cfd):
-        open(cfd, "w").close()
-    if get_entry(cfd, "reach") is None:
+    if not os.path.isfile(cfd) or get_entry(cfd, "reach") is None:
         try:
             run(case, which("slideDAM"), "-case", ".")
         except RuntimeError as e:
@@ -175,12 +173,13 @@ def run_regenerating(case, processors=1, retries=2):
             longer = max(3.0*travel, 2.0*mesh)
             print("%s: the slide left the mesh (%s %.4g m); regenerating it with %s %.4g m"
                   % (case, key, mesh, key, longer), flush=True)
+            if not os.path.isfile(cfd):
+                open(cfd, "w").close()   # slideFoamCase's defaults, and the longer mesh
             set_entry(cfd, key, "%.6g" % longer, add=True)
             # Afresh from the start on the new mesh: the fields and records of the run that left the old one go.
             for stale in time_dirs(case) + ["postProcessing/slideFoam"]:
                 shutil.rmtree(os.path.join(case, stale))
             subprocess.run(["bash", "-c", "rm -rf processor*"], cwd=case, check=True)
-    return None
 
 
 def time_dirs(case):
