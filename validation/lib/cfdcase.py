@@ -146,8 +146,8 @@ def run_sized(case, processors=1, retries=2):
 def run_regenerating(case, processors=1, retries=2):
     """slideFoamCase, blockMesh and slideFoam. slideDAM's reach bounds neither end of the CFD's (Table 1 Case 8's
     block slides on past slideDAM's 47 m; Case 4's rear spreads upslope past slideDAM's): where the slide leaves the
-    mesh, the case is regenerated with cfdDict's reach (or behind) three times the travel it had at the last write, at
-    least twice the mesh that was too short, and run afresh, up to `retries` times. Returns None, or the reason the
+    mesh, the case is regenerated with cfdDict's reach (or behind) three times the travel it had when it left, at least
+    twice the mesh that was too short, and run afresh, up to `retries` times. Returns None, or the reason the
     last try failed (its step and the end of its log)."""
     from slidefoam_io import read_runout
     cfd = os.path.join(case, "system", "cfdDict")
@@ -165,7 +165,7 @@ def run_regenerating(case, processors=1, retries=2):
             if attempt == retries or not ends:
                 return str(e)[-1500:]
             key, phrase = ends[0]
-            # The travel at the last write (runout.dat has no row at the failure itself).
+            # The travel when it left (slideFoam writes runout.dat's row and the fields at that time before it stops).
             r = read_runout(os.path.join(case, "postProcessing", "slideFoam", "runout.dat"))
             travel = r["front"][-1] if key == "reach" else r["rear"][0] - r["rear"][-1]
             mesh = float(re.search(r"%s ([0-9.eE+-]+) m" % phrase,

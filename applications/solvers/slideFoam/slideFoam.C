@@ -202,13 +202,41 @@ int main(int argc, char *argv[])
 
         runTime.printExecutionTime(Info);
 
+        // A slide leaving the mesh stops the run (its runout would be cut short), but the
+        // state it reached is written first, for ParaView and for extendSlideMesh to carry
+        // on from; no summary.json, which would read as a result.
+        const bool leaving = runout.state().atDomainEnd || runout.state().atUpslopeEnd || runout.state().atTop;
+        if (leaving && !runTime.writeTime())
+        {
+            runTime.writeNow();
+            runout.record();
+        }
+        if (leaving)
+        {
+            // Marks the time for extendSlideMesh, which carries a run on from the write
+            // before it: by now some of the slide may have left through the open end.
+            IOdictionary stopped
+            (
+                IOobject("slideFoamStopped", runTime.timeName(), "uniform", runTime,
+                         IOobject::NO_READ, IOobject::NO_WRITE, false)
+            );
+            stopped.add
+            (
+                "reason",
+                word(runout.state().atDomainEnd ? "downslopeEnd" : runout.state().atUpslopeEnd ? "upslopeEnd" : "top")
+            );
+            stopped.regIOobject::write();
+        }
+        const string stateWritten = leaving
+            ? string(" The fields at that time are in " + runTime.timeName() + "/ and runout.dat ends there.")
+            : "";
         if (runout.state().atDomainEnd)
         {
             FatalErrorInFunction
                 << "the slide's front reached the downslope end of the mesh at time "
                 << runTime.timeName() << " s: its runout would be cut short. Give a longer"
-                << " reach in system/cfdDict and regenerate the case (slideFoamCase)."
-                << exit(FatalError);
+                << " reach in system/cfdDict and regenerate the case (slideFoamCase), or carry the run on to a"
+                << " longer mesh (extendSlideMesh)." << stateWritten << exit(FatalError);
         }
         if (runout.state().atUpslopeEnd)
         {
@@ -216,7 +244,8 @@ int main(int argc, char *argv[])
                 << "the slide's rear reached the upslope end of the mesh at time "
                 << runTime.timeName() << " s (rear " << runout.state().sample.rear << " m): slide"
                 << " would leave through it. Give a longer behind in system/cfdDict and regenerate the case"
-                << " (slideFoamCase)." << exit(FatalError);
+                << " (slideFoamCase), or carry the run on to a longer mesh (extendSlideMesh)." << stateWritten
+                << exit(FatalError);
         }
         if (runout.state().atTop)
         {
@@ -226,7 +255,8 @@ int main(int argc, char *argv[])
                 << "), " << runout.state().topOutflow << " m2 of slide out through it ("
                 << 100*runout.state().topOutflow/max(runout.initialVolume(), SMALL) << " % of the slide). Give a larger"
                 << " heightRatio (or aheadHeightRatio, ahead of the slide) in system/cfdDict, or top slip where"
-                << " only spray reaches it, and regenerate the case (slideFoamCase)." << exit(FatalError);
+                << " only spray reaches it, and regenerate the case (slideFoamCase)." << stateWritten
+                << exit(FatalError);
         }
         if (scene.control.stopAtRest && runout.turned())
         {
@@ -247,6 +277,15 @@ int main(int argc, char *argv[])
             atRest = true;
             break;
         }
+    }
+
+    // An end time off the write interval is written too (a run carried on from the time it
+    // left a shorter mesh counts its writes from there), so that summary.json's runout is
+    // runout.dat's last row and a field on disk.
+    if (!atRest && runTime.timeIndex() > runTime.startTimeIndex() && !runTime.writeTime())
+    {
+        runTime.writeNow();
+        runout.record();
     }
 
     runout.writeSummary(runTime.elapsedClockTime(), atRest);

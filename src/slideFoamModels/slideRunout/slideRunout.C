@@ -201,7 +201,10 @@ void Foam::functionObjects::slideRunout::recordMechanism()
     // A time already recorded: a restart's start row kept in mechanism.dat (as in
     // runout.dat), or a stop's state written at a write time.
     const scalar t = time_.value();
-    if (!mechanisms_.empty() && mechanisms_.back().first >= t - 1e-9*max(mag(t), scalar(1))) return;
+    if (!mechanisms_.empty() && (mechanisms_.back().first >= t || Time::timeName(mechanisms_.back().first) == time_.timeName()))
+    {
+        return;
+    }
     mechanismLog_->write(time_.value(), m);
     mechanisms_.emplace_back(time_.value(), m.name);
 }
@@ -242,7 +245,9 @@ Foam::functionObjects::slideRunout::slideRunout
         const std::vector<slide::output::RunoutSample>& kept = log_->kept();
         // A restart measures the volume change from the run's start, not its own.
         if (!kept.empty() && kept.front().mass > 0) initialVolume_ = kept.front().mass/scene_.slide.density;
-        startRowKept_ = !kept.empty() && mag(kept.back().time - t0) <= 1e-9*max(mag(t0), scalar(1));
+        // The start time is read off its directory's name (timePrecision digits): a row
+        // of the same name is its own, whether or not it was on the write interval.
+        startRowKept_ = !kept.empty() && Time::timeName(kept.back().time) == runTime.timeName();
         mechanismLog_.reset(new slide::output::MechanismLog(runTime.globalPath(), "slideFoam", t0 > 0, t0));
         sites_.reset(new slide::output::SiteMonitor(scene_.sites, scene_.slide.frontPosition(), runTime.globalPath(),
                                                     "slideFoam", t0 > 0, t0));

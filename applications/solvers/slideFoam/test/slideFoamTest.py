@@ -410,6 +410,16 @@ def test_base(work):
               "mesh too short %s: exit %d, error names the %s end and %s" % (end, rc, end, key))
         check(not os.path.exists(os.path.join(short, "postProcessing", "slideFoam", "summary.json")),
               "mesh too short %s: no summary.json written" % end)
+        # The state it reached is written, off the write interval, and runout.dat's last row is that time's (the
+        # directory named to timePrecision 6).
+        last = time_dirs(short)[-1]
+        rows = runout(short)
+        named = re.search(r"The fields at that time are in ([0-9.eE+-]+)/", log)
+        check(named is not None and named.group(1) == last and float(last) % 0.5 > 1e-6
+              and os.path.exists(os.path.join(short, last, "alpha.slide"))
+              and abs(rows["time"][-1]/float(last) - 1) < 1e-5,
+              "mesh too short %s: fields written at the time it stopped (%s s, the message names %s), runout.dat's last "
+              "row at %g s" % (end, last, named.group(1) if named else None, rows["time"][-1]))
 
 
 def test_remoulding(work):
@@ -552,24 +562,38 @@ def test_extend(work):
     cfd = {"cellsPerHeight": 5, "baseRefinement": 2, "behind": 80}
     control = {"endTime": 6, "writeInterval": 1}
     long = make_case(template, work, "long", control=control, cfd=dict(cfd, reach=80))
-    short = make_case(template, work, "short", control=dict(control, endTime=2), cfd=dict(cfd, reach=20))
-    for c in (long, short):
-        prepare(c)
-        run_slidefoam(c)
-    extended = os.path.join(work, "extended")
-    if os.path.exists(extended):
-        shutil.rmtree(extended)
+    short = make_case(template, work, "short", control=control, cfd=dict(cfd, reach=20))
+    prepare(long)
+    run_slidefoam(long)
+    # The short mesh's front leaves it between writes: slideFoam stops there, the fields of that time written.
+    prepare(short)
+    rc = run(short, which("slideFoam"), check=False)
+    left = time_dirs(short)[-1]
+    check(rc != 0 and "downslope end of the mesh" in open(os.path.join(short, "log.slideFoam")).read()
+          and float(left) % 1 > 1e-6, "the slide left the 20 m reach at %s s, its fields written then" % left)
     tool = os.path.join(top, "bin", "tools", "extendSlideMesh")
-    out = run(work, tool, short, extended, "--reach", "80", "--end-time", "6", log="log.extendSlideMesh")
-    log = open(os.path.join(work, "log.extendSlideMesh")).read()
-    check(out == 0 and "goes on from 2 s" in log, "extendSlideMesh carried the 2 s fields over: "
+    front_long = runout(long)["front"][-1]
+
+    def extend(name, *more):
+        target = os.path.join(work, name)
+        if os.path.exists(target):
+            shutil.rmtree(target)
+        out = run(work, tool, short, target, "--reach", "80", "--end-time", "6", *more, log="log." + name)
+        log = open(os.path.join(work, "log." + name)).read()
+        if out == 0:
+            run_slidefoam(target)
+        return target, out, log
+
+    # By default from the write before the stop: by the stop some of the slide had left through the open end.
+    extended, out, log = extend("extended")
+    check(out == 0 and "slideFoam stopped at %s s" % left in log and "goes on from 2 s" in log,
+          "extendSlideMesh carried the 2 s fields over, the write before the stop: "
           + " ".join(line for line in log.splitlines() if "cells ->" in line))
-    run_slidefoam(extended)
     rl, re_ = runout(long), runout(extended)
     times = re_["time"]
     check(bool(np.all(np.diff(times) > 0)) and list(times) == list(rl["time"]),
           "runout.dat over both meshes holds each time once: %s" % " ".join("%g" % t for t in times))
-    front_short = runout(short)["front"][-1]
+    front_short = runout(short)["front"][2]
     sl, se = summary(long), summary(extended)
     d = abs(sl["runout_m"] - se["runout_m"])
     # The meshes differ only beyond the short one's end, where the light ambient leaves through its open end.
@@ -581,6 +605,19 @@ def test_extend(work):
     check(abs(se["volume_relative_change"] - whole) < 1e-9 and abs(whole) < 0.005,
           "volume change from the run's start: %.3e in summary.json, %.3e from runout.dat's first and last rows "
           "(on the long mesh: %.3e)" % (se["volume_relative_change"], whole, sl["volume_relative_change"]))
+
+    # From the stop itself, when asked: the writes count from there, the end time off their interval is
+    # landed on and written, and the stop's row (its time to more digits than its directory's name) is held once.
+    at_stop, out, log = extend("extendedAtStop", "--time", left)
+    times = runout(at_stop)["time"]
+    check(out == 0 and "goes on from %s s" % left in log and bool(np.all(np.diff(times) > 1e-3))
+          and times[-1] == 6.0 and time_dirs(at_stop)[-1] == "6",
+          "carried on from the stop at %s s: runout.dat %s" % (left, " ".join("%.7g" % t for t in times)))
+    stop = runout(short)
+    d = abs(summary(at_stop)["runout_m"] - front_long)
+    check(d < 0.01*(front_long - stop["front"][-1]), "front at 6 s carried on from the stop: %.4f m (%.2g m from the "
+          "long mesh's, within 1 %% of the travel since; %.2e of the slide left through the short mesh's end)"
+          % (summary(at_stop)["runout_m"], d, 1 - stop["mass"][-1]/stop["mass"][0]))
     bad = make_case(template, work, "notSlideFoam")
     rc = run(work, tool, bad, os.path.join(work, "badTarget"), "--reach", "80", log="log.extendBad", check=False)
     check(rc != 0 and "no slideFoam fields" in open(os.path.join(work, "log.extendBad")).read()
