@@ -227,8 +227,9 @@ int main(int argc, char *argv[])
             );
             stopped.regIOobject::write();
         }
-        const string stateWritten = leaving
-            ? string(" The fields at that time are in " + runTime.timeName() + "/ and runout.dat ends there.")
+        const std::string stateWritten = leaving
+            ? " The fields at that time are in " + std::string(Pstream::parRun() ? "processor*/" : "")
+              + runTime.timeName() + "/ and runout.dat ends there."
             : "";
         if (runout.state().atDomainEnd)
         {
@@ -236,7 +237,7 @@ int main(int argc, char *argv[])
                 << "the slide's front reached the downslope end of the mesh at time "
                 << runTime.timeName() << " s: its runout would be cut short. Give a longer"
                 << " reach in system/cfdDict and regenerate the case (slideFoamCase), or carry the run on to a"
-                << " longer mesh (extendSlideMesh)." << stateWritten << exit(FatalError);
+                << " longer mesh (extendSlideMesh)." << stateWritten.c_str() << exit(FatalError);
         }
         if (runout.state().atUpslopeEnd)
         {
@@ -244,7 +245,7 @@ int main(int argc, char *argv[])
                 << "the slide's rear reached the upslope end of the mesh at time "
                 << runTime.timeName() << " s (rear " << runout.state().sample.rear << " m): slide"
                 << " would leave through it. Give a longer behind in system/cfdDict and regenerate the case"
-                << " (slideFoamCase), or carry the run on to a longer mesh (extendSlideMesh)." << stateWritten
+                << " (slideFoamCase), or carry the run on to a longer mesh (extendSlideMesh)." << stateWritten.c_str()
                 << exit(FatalError);
         }
         if (runout.state().atTop)
@@ -255,7 +256,7 @@ int main(int argc, char *argv[])
                 << "), " << runout.state().topOutflow << " m2 of slide out through it ("
                 << 100*runout.state().topOutflow/max(runout.initialVolume(), SMALL) << " % of the slide). Give a larger"
                 << " heightRatio (or aheadHeightRatio, ahead of the slide) in system/cfdDict, or top slip where"
-                << " only spray reaches it, and regenerate the case (slideFoamCase)." << stateWritten
+                << " only spray reaches it, and regenerate the case (slideFoamCase)." << stateWritten.c_str()
                 << exit(FatalError);
         }
         if (scene.control.stopAtRest && runout.turned())
