@@ -206,13 +206,13 @@ int main(int argc, char *argv[])
         // state it reached is written first, for ParaView and for extendSlideMesh to carry
         // on from; no summary.json, which would read as a result.
         const bool leaving = runout.state().atDomainEnd || runout.state().atUpslopeEnd || runout.state().atTop;
-        if (leaving && !runTime.writeTime())
-        {
-            runTime.writeNow();
-            runout.record();
-        }
         if (leaving)
         {
+            if (!runTime.writeTime())
+            {
+                runTime.writeNow();
+                runout.record();
+            }
             // Marks the time for extendSlideMesh, which carries a run on from the write
             // before it: by now some of the slide may have left through the open end.
             IOdictionary stopped
