@@ -20,7 +20,8 @@ generated from SlideFoam scenes by slideFoamCase:
               shearBandThickness xi counts a band h/t times the cell's strain
               (exactly, where xi does not feed back) and the factor follows the
               cell thickness on a graded mesh
-  parallel    the flume on 2 MPI ranks (decomposePar) matches the serial run
+  parallel    the flume on 2 MPI ranks (decomposePar) matches the serial run; a run on
+              2 ranks that stops at a mesh end has its stop state reconstructed
   restart     the flume stopped at 1 s and restarted (startFrom latestTime) to 2 s:
               runout.dat keeps the first leg's rows as written and holds each time
               once, the front matches the uninterrupted run's, and summary.json's
@@ -60,6 +61,7 @@ Usage: slideFoamTest.py NAME [workDir]"""
 import os
 import re
 import shutil
+import subprocess
 import sys
 import tempfile
 
@@ -69,7 +71,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, read_field, set_entry, set_sites, time_dirs  # noqa: E402
-from runner import which  # noqa: E402
+from runner import slidefoam_env, which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
 
 FLUME = os.path.join(top, "tutorials", "kroneWrightRun15")
@@ -501,6 +503,34 @@ def test_parallel(work):
     # The ranks' GAMG agglomerations differ, and p_rgh is solved to relTol 0.01 before its final corrector.
     check(du < 0.005*umax, "U in the slide: max |difference| %.2g m/s, %.2g %% of the largest speed (< 0.5 %%)"
           % (du, 100*du/umax))
+
+    # A run on 2 ranks that stops where the slide leaves the mesh, run as the tutorials' Allrun runs it
+    # (RunFunctions' runSlideFoam): the state at the stop is reconstructed beside processor*/, so that ParaView opens
+    # the case as a serial one, and the function still fails.
+    short = make_case(FLUME, work, "parallel_short", scene={"rearWall": "no"},
+                      control={"endTime": 1.5, "writeInterval": 0.5},
+                      cfd={"cellsPerHeight": 10, "reach": 0.3, "behind": 4, "processors": 2})
+    p = subprocess.run(["bash", "-c", ". '%s/bin/tools/RunFunctions' && runSlideFoam" % top], cwd=short,
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=slidefoam_env())
+    out = p.stdout.decode(errors="replace")
+    stopped = [t for t in time_dirs(short)
+               if os.path.isfile(os.path.join(short, t, "uniform", "slideFoamStopped"))]
+    on_ranks = [t for t in time_dirs(os.path.join(short, "processor0"))
+                if os.path.isfile(os.path.join(short, "processor0", t, "uniform", "slideFoamStopped"))]
+    check(p.returncode != 0 and len(stopped) == 1 and stopped == on_ranks
+          and os.path.isfile(os.path.join(short, stopped[0], "alpha.slide"))
+          and "are reconstructed" in out and float(stopped[0]) % 0.5 > 1e-6,
+          "2 ranks, mesh too short downslope, through runSlideFoam: exit %d, the stop time %s reconstructed with its "
+          "mark (ranks' stop time %s)" % (p.returncode, stopped, on_ranks))
+    if not stopped:
+        return
+    # The reconstructed stop state is the ranks' own: the slide's volume there equals their sum.
+    cells = read_field(short, stopped[0], "alpha.slide")
+    ranks = np.concatenate([read_field(os.path.join(short, "processor%d" % r), stopped[0], "alpha.slide")
+                            for r in range(2)])
+    check(len(cells) == len(ranks) and abs(float(cells.sum()) - float(ranks.sum())) < 1e-9*len(cells),
+          "reconstructed alpha.slide at the stop: %d cells, sum %.9g; the ranks' %d cells, sum %.9g"
+          % (len(cells), cells.sum(), len(ranks), ranks.sum()))
 
 
 def test_restart(work):
