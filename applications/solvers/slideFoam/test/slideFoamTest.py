@@ -327,6 +327,29 @@ def test_base(work):
     # block. Before SIMPLEC and without fvMatrix::relax(1) it stayed put (0.001 m).
     block = base_case(work, "base_block_s_b0", "interface frictional;\n    s_b 0;", s_uo=2000)
     travel_block = centre_of_mass_travel(block, t)
+    # A block far stronger than its weight's stress on a slipping base: slideFoamCase warns (slideFoam slid the
+    # flume's slurry 53 % short of the rigid law at 16 times rho' g H0 = 3158 Pa, validation/cfd/strongBlock.md);
+    # not at 2 kPa (0.63 times), nor at 50 kPa on a no-slip base, which holds it still.
+    warned = {}
+    for label, iface, s_uo in [("2 kPa, frictionless", "interface frictional;\n    s_b 0;", 2000),
+                               ("50 kPa, frictionless", "interface frictional;\n    s_b 0;", 50000),
+                               ("50 kPa, hydroplaning", "interface hydroplaning;\n    C_F 0.5;", 50000),
+                               ("50 kPa, no-slip", "interface noSlip;", 50000)]:
+        c = make_case(FLUME, work, "base_strength_" + label.replace(" ", "").replace(",", "_"),
+                      scene={"rearWall": "no", "s_uo": s_uo}, cfd={"cellsPerHeight": 10, "reach": 8, "behind": 4})
+        p = os.path.join(c, "constant", "sceneProperties")
+        text = open(p).read().replace("interface noSlip;", iface)
+        open(p, "w").write(text)
+        run(c, which("slideFoamCase"), "-case", ".", log="log.slideFoamCase")
+        m = re.search(r"Warning: constant/sceneProperties: rheology s_uo (\S+) Pa is (\S+) times the slide's weight "
+                      r"stress rho' g H0 \((\S+) Pa\), and it slides on its (\w+) base",
+                      open(os.path.join(c, "log.slideFoamCase")).read())
+        warned[label] = m.groups() if m else None
+    check(warned["2 kPa, frictionless"] is None and warned["50 kPa, no-slip"] is None
+          and warned["50 kPa, frictionless"] == ("50000", "15.8", "3158", "frictional")
+          and warned["50 kPa, hydroplaning"] is not None and warned["50 kPa, hydroplaning"][3] == "hydroplaning",
+          "slideFoamCase warns of a block 15.8 times its weight's stress on a slipping base, not at 0.63 times nor "
+          "on a no-slip base: %s" % warned)
     check(abs(travel_block/exact - 1) < 0.05, "strong block on a frictionless base: centre of mass moved %.3f m, "
           "g sin(theta) t^2/2 = %.3f m (within 5 %%)" % (travel_block, exact))
     # Most of the block's shortfall is the unconverged step's too (its pressure correctors
