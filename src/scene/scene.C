@@ -381,6 +381,17 @@ double Scene::rigidSlabFactorOfSafety() const
     return driving > 0.0 ? rigidSlabResistance()/driving : HUGE_VAL;
 }
 
+double Scene::strengthOverWeightStress() const
+{
+    return rheology.s_uo/(slide.density*g*slide.height);
+}
+
+bool Scene::slidesFreelyStrongerThan(const double ratio) const
+{
+    return interface.type != Interface::Type::noSlip && rigidSlabFactorOfSafety() < 1.0
+        && strengthOverWeightStress() > ratio;
+}
+
 std::string Scene::describe() const
 {
     std::ostringstream os;

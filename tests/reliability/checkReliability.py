@@ -20,13 +20,12 @@ Usage: checkReliability.py blowup|static slideDAM|slideMPM|slideFoam <work dir> 
 import math
 import os
 import re
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import make_case, prepare, run, set_entry, time_dirs, read_field  # noqa: E402
+from cfdcase import make_case, prepare, run, time_dirs, read_field  # noqa: E402
 from runner import which  # noqa: E402
 from slidefoam_io import read_runout  # noqa: E402
 
@@ -77,6 +76,8 @@ def blowup(app, work):
     place = re.search(r"(node \d+ of \d+ at s = \S+ m|particle \d+ at s = \S+ m along the base|in cell \d+ at \()",
                       log)
     check("%s names the place" % app, place is not None, place.group(0) if place else "")
+    if app == "slideFoam":
+        check("slideFoam names the remedy for a step too long", "Reduce maxCo / maxDeltaT" in log, log[-300:])
     quantity = re.search(r"(node order|velocity|kinetic energy|NaN|\|U\| = \S+ m/s)", log)
     check("%s names the quantity" % app, quantity is not None, quantity.group(0) if quantity else "")
     out = os.path.join(d, "postProcessing", app)

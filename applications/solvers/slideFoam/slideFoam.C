@@ -56,6 +56,7 @@ Description
 #include "fvcSmooth.H"
 
 #include "upwind.H"
+#include <iomanip>
 
 #include "slideSceneObject.H"
 #include "slideRheology.H"

@@ -243,27 +243,17 @@ int main(int argc, char** argv)
                       << "\"Ambient under the nose\"): refine the columns (cellsPerHeight) with the base\n" << std::endl;
         }
 
-        const double weightStress = sc.slide.density*sc.g*sc.slide.height;
-        const double strengthRatio = sc.rheology.s_uo/weightStress;
-        if
-        (
-            sc.interface.type != scene::Interface::Type::noSlip
-         && sc.rigidSlabFactorOfSafety() < 1.0
-         && strengthRatio > 4.0
-        )
+        if (sc.slidesFreelyStrongerThan(scene::Scene::cfdStrongBlockRatio))
         {
-            // Measured, not derived: the flume's slurry slid as the rigid law to 4 times its weight stress and
-            // not from 8 times on (validation/cfd/strongBlock.md); a block at 8-64 times slid within 3-5 % but
-            // no longer rigid inside. What sets the limit was not found.
             std::ostringstream ratio;
-            ratio << std::setprecision(3) << strengthRatio;
+            ratio << std::setprecision(3) << sc.strengthOverWeightStress();
             std::cout << "Warning: " << scene::Scene::sceneFile() << ": rheology s_uo " << num(sc.rheology.s_uo)
                       << " Pa is " << ratio.str() << " times the slide's weight stress rho' g H0 ("
-                      << num(std::round(weightStress)) << " Pa), and it slides on its " << sc.interface.typeName()
-                      << " base: slideFoam's capped plug has slid blocks this strong wrongly (the flume's slurry at 8 "
-                      << "and 16 times: 8.5 and 53 % short of the rigid block's law, a blow-up at 1.8 s at 8 times; "
-                      << "validation/cfd/strongBlock.md). Check the result against the rigid block's law, slideDAM or "
-                      << "slideMPM\n" << std::endl;
+                      << num(std::round(sc.slide.density*sc.g*sc.slide.height)) << " Pa), and it slides on its "
+                      << sc.interface.typeName() << " base: slideFoam's capped plug has slid blocks this strong "
+                      << "wrongly (the flume's slurry at 8 and 16 times: 8.5 and 53 % short of the rigid block's law, "
+                      << "a blow-up at 1.8 s at 8 times; validation/cfd/strongBlock.md). Check the result against the "
+                      << "rigid block's law, slideDAM or slideMPM\n" << std::endl;
         }
 
         mkdir((caseDir + "/0.orig").c_str(), 0755);
