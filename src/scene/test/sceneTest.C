@@ -288,6 +288,34 @@ TEST_F(SceneFixture, RigidSlabFactorOfSafetyIsTheLimitEquilibrium)
     EXPECT_NE(p.describe().find("as a rigid slab"), std::string::npos) << p.describe();
 }
 
+TEST(Scene, StrongBlockSlidingFreely)
+{
+    // s_uo over rho' g H0, and the regime where slideFoam's plug was measured to fail: a slide that must slide on a
+    // frictional or hydroplaning base, stronger than the ratio asked.
+    const double H = 5.0, rho = 600.0;
+    Interface frictionless;
+    frictionless.type = Interface::Type::frictional;
+    frictionless.s_b = 0.0;
+    Scene s = blockScene(5.0, 40.0, H, rho, 200000.0, frictionless);
+    EXPECT_NEAR(s.strengthOverWeightStress(), 200000.0/(rho*9.81*H), 1e-12);   // 6.80
+    EXPECT_TRUE(s.slidesFreelyStrongerThan(4.0));
+    EXPECT_FALSE(s.slidesFreelyStrongerThan(8.0));
+    s.rheology.s_uo = 50000.0;                                                 // 1.70
+    EXPECT_FALSE(s.slidesFreelyStrongerThan(Scene::cfdStrongBlockRatio));
+    s = blockScene(5.0, 40.0, H, rho, 200000.0, Interface());                  // no-slip: held
+    EXPECT_FALSE(s.slidesFreelyStrongerThan(4.0));
+    Interface held;
+    held.type = Interface::Type::frictional;
+    held.s_b = 5000.0;                                                         // above rho' g H sin(5 deg), 2565 Pa
+    s = blockScene(5.0, 40.0, H, rho, 200000.0, held);
+    EXPECT_FALSE(s.slidesFreelyStrongerThan(4.0));
+    Interface hydroplaning;
+    hydroplaning.type = Interface::Type::hydroplaning;
+    hydroplaning.C_F = 0.003;
+    s = blockScene(5.0, 40.0, H, rho, 200000.0, hydroplaning);
+    EXPECT_TRUE(s.slidesFreelyStrongerThan(4.0));
+}
+
 TEST_F(SceneFixture, SlideBelowTheBaseIsRejected)
 {
     std::string sc = edit("shape        rectangle;", "shape profile;\n    thickness ((0 0) (1 -0.2) (2 0));");
