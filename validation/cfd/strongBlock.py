@@ -13,7 +13,7 @@ Two blocks, each at H0/10 with the solver's defaults (maxDeltaT as the case sets
 Each row: the centre of mass's travel against the law, the spread of the downslope velocity over the cells full of
 slide (alpha > 0.99; a rigid block has none), the largest normal velocity there, and a blow-up's time.
 
-Usage: validation/cfd/strongBlock.py [--ratios 0.5,1,2,4,8,16,32,64] [--work DIR] [--jobs 2]
+Usage: validation/cfd/strongBlock.py [--ratios 0.5,1,2,3.2,4,8,16,32,64] [--work DIR] [--jobs 2]
 (after ./Allwmake; about 5 minutes on 2 cores; writes strongBlock.md and strongBlock.json beside this script)"""
 import argparse
 import json
@@ -132,7 +132,7 @@ def write(rows, blocks):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--ratios", default="0.5,1,2,4,8,16,32,64")
+    ap.add_argument("--ratios", default="0.5,1,2,3.2,4,8,16,32,64")
     ap.add_argument("--work", default=os.path.join(top, "platforms", "validation-work", "strongBlock"))
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
