@@ -345,8 +345,8 @@ def test_base(work):
                       r"stress rho' g H0 \((\S+) Pa\), and it slides on its (\w+) base",
                       open(os.path.join(c, "log.slideFoamCase")).read())
         warned[label] = m.groups() if m else None
-    # Run, the 200 kPa block (63 times) blew up within 0.02 s in session 84 (strongBlock.md): a blow-up there names
-    # the plug's limit, not a shorter step, which does not help.
+    # The 200 kPa block (63 times) blew up within 0.02 s in session 84 (strongBlock.md): a blow-up there names the
+    # plug's limit, not a shorter step, which does not help.
     strong = make_case(FLUME, work, "base_strength_200kPa", scene={"rearWall": "no", "s_uo": 200000},
                        control={"endTime": 0.2, "writeInterval": 0.1},
                        cfd={"cellsPerHeight": 10, "reach": 8, "behind": 4})
@@ -358,9 +358,8 @@ def test_base(work):
     log = open(os.path.join(strong, "log.slideFoam")).read()
     named = "63.3 times its weight stress rho' g H0 on a slipping base" in log and "Reduce maxCo" not in log
     check(rc == 0 or ("blow-up at time" in log and named),
-          "the 200 kPa block on a frictionless base: exit %d%s" % (
-              rc, ", its blow-up message names the plug's limit" if named else
-              (" with a blow-up message naming the plug's limit: %s" % named if rc else "")))
+          "the 200 kPa block on a frictionless base: exit %d; a blow-up's message names the plug's limit: %s"
+          % (rc, named))
     check(warned["2 kPa, frictionless"] is None and warned["50 kPa, no-slip"] is None
           and warned["50 kPa, frictionless"] == ("50000", "15.8", "3158", "frictional")
           and warned["50 kPa, hydroplaning"] is not None and warned["50 kPa, hydroplaning"][3] == "hydroplaning",
