@@ -30,6 +30,7 @@ top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import make_case, prepare, read_field, run, time_dirs  # noqa: E402
 from runner import which  # noqa: E402
+from scene_variants import foam_dictionary  # noqa: E402
 
 BLOCKS = [
     {"name": "flume", "title": "Krone-Wright flume's slurry, 0.3 m", "tutorial": "tutorials/kroneWrightRun15",
@@ -40,26 +41,19 @@ BLOCKS = [
 
 
 def scene_numbers(tutorial):
-    """rho' [kg/m3], H0 [m], theta [rad], ambient density [kg/m3] of the tutorial's scene."""
+    """rho' [kg/m3], H0 [m], theta [rad], ambient density [kg/m3] of the tutorial's scene (a light ambient's 1 kg/m3
+    where it gives none, as the scene reader takes it)."""
     path = os.path.join(top, tutorial, "constant", "sceneProperties")
-    text = open(path).read()
 
-    def block(name):
-        m = re.search(r"^%s\s*\{([^}]*)\}" % name, text, flags=re.M)
-        if not m:
-            raise SystemExit("%s: no '%s' block" % (path, name))
-        return m.group(1)
-
-    def number(body, key, default=None):
-        m = re.search(r"^\s*%s\s+([0-9.eE+-]+)\s*;" % key, body, flags=re.M)
-        if m:
-            return float(m.group(1))
-        if default is None:
-            raise SystemExit("%s: no '%s'" % (path, key))
-        return default
-    slide, base, ambient = block("slide"), block("base"), block("ambient")
-    return (number(slide, "density"), number(slide, "height"), math.radians(number(base, "angle")),
-            number(ambient, "density", 1.0))   # a light ambient: 1 kg/m3 unless given
+    def value(key, default=None):
+        rc, out = foam_dictionary("-precision", "15", "-entry", key, "-value", path)
+        if rc != 0:
+            if default is None:
+                raise SystemExit("%s: no entry '%s'" % (path, key))
+            return default
+        return float(out.strip())
+    return (value("slide/density"), value("slide/height"), math.radians(value("base/angle")),
+            value("ambient/density", 1.0))
 
 
 def run_block(block, ratio, work):
