@@ -10,7 +10,8 @@ slideMPM each solve for the entry that reproduces the observation:
   C_F = 0.003 from De Blasio et al. 2004 and gets 1381 m with its DAM and 1400 m with its MPM), with the rigid block
   again, and the end at 1200 s again; slideMPM run once with slideDAM's answer (check_at);
 - the Mediterranean escarpment: the intact strength s_uo for the observed 420 m (the paper's laboratory value is
-  15 kPa, with which its DAM ran 462 m and its MPM 444 m);
+  15 kPa, with which its DAM ran 462 m and its MPM 444 m), asked of slideFoam too since session 85 (two to five
+  minutes a run on 2 MPI ranks, its search about 25 min);
 - Table 1 Case 3, whose s_uo is garbled in the paper: the s_uo for the paper's 19.7 m (DAM and MPM) and 19.4 m (CFD,
   asked of slideFoam since session 82: two or three minutes a run on 2 MPI ranks, its search after the others'),
   each method run to rest (the scene's 600 s).
@@ -19,11 +20,13 @@ Each at the tutorial's set-up (Case 3: Table 1's, slideDAM 800 columns, slideMPM
 H0/10 with H0/40 on the base and the tutorials' maxDeltaT 0.05 s), the
 tolerance 1 % of the target (0.2 % for C_F, to which the runout is nearly blind). slideMPM's searches run two at a
 time on one thread each. Writes backAnalysis.json, backAnalysis.md and backAnalysis.png here; the runs stay in
-platforms/validation-work/backAnalysis. About an hour and a half on 2 cores.
+platforms/validation-work/backAnalysis. About two hours on 2 cores.
 
-Usage: validation/backAnalysis/backAnalysis.py [--stored] [--methods M1,M2]
+Usage: validation/backAnalysis/backAnalysis.py [--stored] [--methods M1,M2] [--studies S1,S2]
   --stored: redraw backAnalysis.md and backAnalysis.png from backAnalysis.json without running
   --methods: run only these methods' searches and keep the others' from backAnalysis.json
+  --studies: run only the studies whose names contain these words (case aside: escarpment, hydroplaning, case3)
+             and keep the others' from backAnalysis.json
 """
 import os
 import subprocess
@@ -53,7 +56,7 @@ STUDIES = [
      "paper": "0.003 taken (De Blasio et al. 2004): 1381 m (DAM), 1400 m (MPM)", "rigid": "C_F"},
     {"name": "Mediterranean escarpment", "tutorial": "tutorials/mediterraneanEscarpment",
      "find": ("rheology/s_uo", 8000.0, 30000.0), "unit": "Pa",
-     "target": {"slideDAM": 420.0, "slideMPM": 420.0},
+     "target": {"slideDAM": 420.0, "slideMPM": 420.0, "slideFoam": 420.0},
      "paper": "15 kPa measured: 462 m (DAM), 444 m (MPM)"},
     {"name": "Table 1 Case 3", "tutorial": "tutorials/table1/case03", "mpmCost": 3,
      "find": ("rheology/s_uo", 1000.0, 3000.0), "unit": "Pa",
@@ -141,8 +144,13 @@ def methods_of(study):
     return [m for m in METHODS if m in study["target"]]
 
 
-def measure(methods, stored):
-    """Every study's searches by the given methods; the other methods' entries kept from the stored data."""
+def study_key(name):
+    return name.lower().replace(" ", "").replace(",", "")
+
+
+def measure(methods, stored, studies=None):
+    """The given studies' (all where None) searches by the given methods; the other entries kept from the stored
+    data."""
     from concurrent.futures import ThreadPoolExecutor
     work = os.path.join(TOP, "platforms", "validation-work", "backAnalysis")
     data, cases = [], []
@@ -163,12 +171,13 @@ def measure(methods, stored):
         if study.get("constantResistance"):
             constant_resistance(case, study["constantResistance"])
         old = [e for e in stored if e["study"] == study["name"]]
+        chosen = studies is None or any(w in study_key(study["name"]) for w in studies)
         for method in methods_of(study):
-            if method not in methods and old and method in old[0]:
+            if (method not in methods or not chosen) and old and method in old[0]:
                 entry[method] = old[0][method]
         data.append(entry)
-        cases.append((study, folder, case))
-    wanted = [(k, m) for k, study in enumerate(STUDIES) for m in methods_of(study) if m in methods]
+        cases.append((study, folder, case, chosen))
+    wanted = [(k, m) for k, study in enumerate(STUDIES) for m in methods_of(study) if m in methods and cases[k][3]]
     # slideDAM's searches take seconds; slideMPM's, on slides of a few thousand particles, run two at a time on one
     # thread each, which the small problems use about as well as two threads; slideFoam's, on 2 MPI ranks, after.
     dam_jobs = [(k, m, None) for k, m in wanted if m == "slideDAM"]
@@ -179,7 +188,7 @@ def measure(methods, stored):
 
     def one(job):
         k, method, threads = job
-        study, folder, case = cases[k]
+        study, folder, case, _ = cases[k]
         if method == "slideMPM" and study.get("mpmCheckOnly"):
             dam = ([f for (j, m, _), f in done if j == k and m == "slideDAM"] or [data[k]["slideDAM"]])[0]["result"]
             return job, check_at(case, study, dam["best"]["value"], os.path.join(folder, "slideMPMcheck"))
@@ -315,7 +324,7 @@ def write(data):
 
 def main():
     import json
-    args = options.parse(__doc__, flags=("--stored",), valued=("--methods",))
+    args = options.parse(__doc__, flags=("--stored",), valued=("--methods", "--studies"))
     path = os.path.join(HERE, "backAnalysis.json")
     stored = json.load(open(path)) if os.path.isfile(path) else []
     if args.get("--stored"):
@@ -324,7 +333,10 @@ def main():
     unknown = [m for m in methods if m not in METHODS]
     if unknown:
         sys.exit("--methods: %s is not one of %s" % (", ".join(unknown), ", ".join(METHODS)))
-    data = measure(methods, stored)
+    studies = [study_key(w) for w in args["--studies"].split(",")] if args.get("--studies") else None
+    if studies and not any(w in study_key(st["name"]) for w in studies for st in STUDIES):
+        sys.exit("--studies: %s names none of %s" % (args["--studies"], "; ".join(st["name"] for st in STUDIES)))
+    data = measure(methods, stored, studies)
     with open(path, "w") as f:
         json.dump(data, f, indent=1)
     write(data)
