@@ -11,15 +11,18 @@ sampling reference:
   uniform from 1/60 to 1/20 (S_t 40 measured); the tutorial's pipeline and cable (hypothetical). And slideDAM
   over a grid of s_uo from 15 to 40 kPa: the strength from which its slab stands.
 
-And slideFoam over Case 2's scenes too (since session 82): the CFD's probabilistic answer beside the other two.
+And slideFoam over the same scenes too (Case 2's since session 82, the escarpment's since session 85): the CFD's
+probabilistic answer beside the other two.
 
 slideMPM at the tutorials' fast set-ups, without field output, one run at a time on 2 threads; slideFoam at its
 tutorial's (H0/10 with H0/40 on the base, maxDeltaT 0.05 s), one run at a time on 2 MPI ranks. Writes sweep.json,
-sweep.md and sweep.png here. ~70 min on 2 cores.
+sweep.md and sweep.png here. ~2 h on 2 cores.
 
-Usage: validation/sweep/sweep.py [--stored] [--labels DAM,MPM,CFD,"DAM reference"]
+Usage: validation/sweep/sweep.py [--stored] [--labels DAM,MPM,CFD,"DAM reference"] [--cases C1,C2]
   --stored: redraw sweep.md and sweep.png from sweep.json without running
   --labels: run only these sweeps (and the stand grid with DAM) and keep the others from sweep.json
+  --cases: run only the scenes whose names contain these words (case aside: case2, escarpment) and keep the
+           others from sweep.json
 """
 import json
 import os
@@ -40,7 +43,7 @@ CASES = [
      "n": 24, "nReference": 256, "cfd": True},
     {"name": "Mediterranean escarpment", "tutorial": "tutorials/mediterraneanEscarpment", "sites": None,
      "samples": [("rheology/s_uo", "lognormal", 15000, 0.3), ("rheology/deltaRem", "uniform", 0.0167, 0.05)],
-     "n": 20, "nReference": 512, "standGrid": list(range(15000, 40001, 1000))},
+     "n": 20, "nReference": 512, "standGrid": list(range(15000, 40001, 1000)), "cfd": True},
 ]
 SEED = 1
 LABELS = ("DAM", "MPM", "CFD", "DAM reference")
@@ -73,8 +76,13 @@ def stand_grid(case, values):
         return [[float(r["values"]["rheology/s_uo"]), r.get("runout_m")] for r in json.load(f)["runs"]]
 
 
-def measure(labels, stored):
-    """The sweeps of the given labels; the others' kept from the stored data."""
+def case_key(name):
+    return name.lower().replace(" ", "")
+
+
+def measure(labels, stored, cases=None):
+    """The sweeps of the given labels on the given scenes (all where None); the others' kept from the stored
+    data."""
     work = os.path.join(TOP, "platforms", "validation-work", "sweep")
     data = []
     for spec in CASES:
@@ -86,8 +94,9 @@ def measure(labels, stored):
             set_sites(case, spec["sites"])
         entry = {"case": spec["name"], "tutorial": spec["tutorial"], "samples": spec["samples"], "seed": SEED}
         old = ([e for e in stored if e["case"] == spec["name"]] or [{}])[0]
+        chosen = cases is None or any(w in case_key(spec["name"]) for w in cases)
         for label in labels_of(spec):
-            if label not in labels:
+            if label not in labels or not chosen:
                 if label in old:
                     entry[label] = old[label]
                 continue
@@ -96,7 +105,8 @@ def measure(labels, stored):
                                  spec["samples"])
             print("%s, %s over %d scenes: %.0f s" % (spec["name"], label, n, entry[label]["wall"]), flush=True)
         if spec.get("standGrid"):
-            entry["standGrid"] = stand_grid(case, spec["standGrid"]) if "DAM" in labels else old.get("standGrid")
+            entry["standGrid"] = (stand_grid(case, spec["standGrid"]) if "DAM" in labels and chosen
+                                  else old.get("standGrid"))
         data.append(entry)
     return data
 
@@ -183,10 +193,22 @@ def write(data):
                           dict((v, x) for v, x in grid)[max(ran)],
                           "%.0f" % min(stands) if stands else "none of them",
                           "%.0f" % max(mpm_ran) if mpm_ran else "-", "%.0f" % min(mpm_stood) if mpm_stood else "-")]
-        for method, other in (("MPM", "DAM"), ("DAM", "MPM")):
+            if "CFD" in entry:
+                cfd = [(float(m["values"]["rheology/s_uo"]), m["runout"]) for m in entry["CFD"]["runs"]
+                       if m["runout"] is not None]
+                cfd_ran = [v for v, x in cfd if x >= MOVED]
+                cfd_stood = [v for v, x in cfd if x < MOVED]
+                lines[-1] += " slideFoam's ran out up to %s Pa and stood from %s Pa." % (
+                    "%.0f" % max(cfd_ran) if cfd_ran else "-", "%.0f" % min(cfd_stood) if cfd_stood else "-")
+        pairs = [(stood, "MPM", "DAM"), (stood, "DAM", "MPM")]
+        if "CFD" in entry:
+            stood_cfd = paired(entry, "CFD", "MPM")[1]
+            pairs += [(stood_cfd, "CFD", "MPM"), (stood_cfd, "MPM", "CFD")]
+        for stood, method, other in pairs:
             if stood[method]:
-                lines += ["", "In %d scenes slide%s's slide stood (front under %g m) where slide%s's ran out: s_uo "
-                          "%s Pa." % (len(stood[method]), method, MOVED, other,
+                name = {"DAM": "slideDAM", "MPM": "slideMPM", "CFD": "slideFoam"}
+                lines += ["", "In %d scenes %s's slide stood (front under %g m) where %s's ran out: s_uo "
+                          "%s Pa." % (len(stood[method]), name[method], MOVED, name[other],
                                       ", ".join("%.0f" % v for v in sorted(stood[method])))]
         lines.append("")
     lines += ["![exceedance curves and paired runouts](sweep.png)", ""]
@@ -233,7 +255,7 @@ def write(data):
 
 
 def main():
-    args = options.parse(__doc__, flags=("--stored",), valued=("--labels",))
+    args = options.parse(__doc__, flags=("--stored",), valued=("--labels", "--cases"))
     path = os.path.join(HERE, "sweep.json")
     stored = json.load(open(path)) if os.path.isfile(path) else []
     if args.get("--stored"):
@@ -242,7 +264,10 @@ def main():
         labels = args["--labels"].split(",") if args.get("--labels") else list(LABELS)
         if any(label not in LABELS for label in labels):
             sys.exit("--labels: each one of %s" % ", ".join(LABELS))
-        data = measure(labels, stored)
+        cases = [case_key(w) for w in args["--cases"].split(",")] if args.get("--cases") else None
+        if cases and not any(w in case_key(spec["name"]) for w in cases for spec in CASES):
+            sys.exit("--cases: %s names none of %s" % (args["--cases"], "; ".join(c["name"] for c in CASES)))
+        data = measure(labels, stored, cases)
         with open(path, "w") as f:
             json.dump(data, f, indent=1)
     write(data)
