@@ -207,8 +207,9 @@ def write(data):
         for stood, method, other in pairs:
             if stood[method]:
                 name = {"DAM": "slideDAM", "MPM": "slideMPM", "CFD": "slideFoam"}
-                lines += ["", "In %d scenes %s's slide stood (front under %g m) where %s's ran out: s_uo "
-                          "%s Pa." % (len(stood[method]), name[method], MOVED, name[other],
+                lines += ["", "In %d scene%s %s's slide stood (front under %g m) where %s's ran out: s_uo "
+                          "%s Pa." % (len(stood[method]), "s"[:len(stood[method]) > 1], name[method], MOVED,
+                                      name[other],
                                       ", ".join("%.0f" % v for v in sorted(stood[method])))]
         lines.append("")
     lines += ["![exceedance curves and paired runouts](sweep.png)", ""]
