@@ -144,10 +144,6 @@ def methods_of(study):
     return [m for m in METHODS if m in study["target"]]
 
 
-def study_key(name):
-    return name.lower().replace(" ", "").replace(",", "")
-
-
 def measure(methods, stored, studies=None):
     """The given studies' (all where None) searches by the given methods; the other entries kept from the stored
     data."""
@@ -171,7 +167,7 @@ def measure(methods, stored, studies=None):
         if study.get("constantResistance"):
             constant_resistance(case, study["constantResistance"])
         old = [e for e in stored if e["study"] == study["name"]]
-        chosen = studies is None or any(w in study_key(study["name"]) for w in studies)
+        chosen = options.is_chosen(study["name"], studies)
         for method in methods_of(study):
             if (method not in methods or not chosen) and old and method in old[0]:
                 entry[method] = old[0][method]
@@ -333,9 +329,7 @@ def main():
     unknown = [m for m in methods if m not in METHODS]
     if unknown:
         sys.exit("--methods: %s is not one of %s" % (", ".join(unknown), ", ".join(METHODS)))
-    studies = [study_key(w) for w in args["--studies"].split(",")] if args.get("--studies") else None
-    if studies and not any(w in study_key(st["name"]) for w in studies for st in STUDIES):
-        sys.exit("--studies: %s names none of %s" % (args["--studies"], "; ".join(st["name"] for st in STUDIES)))
+    studies = options.chosen_names(args.get("--studies"), [st["name"] for st in STUDIES], "--studies")
     data = measure(methods, stored, studies)
     with open(path, "w") as f:
         json.dump(data, f, indent=1)

@@ -38,3 +38,24 @@ def measured_or_stored(doc, path, measure, fine=True):
     with open(path, "w") as f:
         json.dump(data, f, indent=1)
     return data
+
+
+def name_key(name):
+    """A study's or scene's name as a --studies/--cases word matches it: lower case, no spaces or commas."""
+    return name.lower().replace(" ", "").replace(",", "")
+
+
+def chosen_names(value, names, option):
+    """The words of an option such as --studies (comma-separated, matched against name_key of each name), or None
+    where the option was not given; stops the script where the words name none of names."""
+    if not value:
+        return None
+    words = [name_key(w) for w in value.split(",")]
+    if not any(w in name_key(n) for w in words for n in names):
+        sys.exit("%s: %s names none of %s" % (option, value, "; ".join(names)))
+    return words
+
+
+def is_chosen(name, words):
+    """Whether a study or scene is among those chosen_names() returned (all where None)."""
+    return words is None or any(w in name_key(name) for w in words)

@@ -76,10 +76,6 @@ def stand_grid(case, values):
         return [[float(r["values"]["rheology/s_uo"]), r.get("runout_m")] for r in json.load(f)["runs"]]
 
 
-def case_key(name):
-    return name.lower().replace(" ", "")
-
-
 def measure(labels, stored, cases=None):
     """The sweeps of the given labels on the given scenes (all where None); the others' kept from the stored
     data."""
@@ -94,7 +90,7 @@ def measure(labels, stored, cases=None):
             set_sites(case, spec["sites"])
         entry = {"case": spec["name"], "tutorial": spec["tutorial"], "samples": spec["samples"], "seed": SEED}
         old = ([e for e in stored if e["case"] == spec["name"]] or [{}])[0]
-        chosen = cases is None or any(w in case_key(spec["name"]) for w in cases)
+        chosen = options.is_chosen(spec["name"], cases)
         for label in labels_of(spec):
             if label not in labels or not chosen:
                 if label in old:
@@ -265,9 +261,7 @@ def main():
         labels = args["--labels"].split(",") if args.get("--labels") else list(LABELS)
         if any(label not in LABELS for label in labels):
             sys.exit("--labels: each one of %s" % ", ".join(LABELS))
-        cases = [case_key(w) for w in args["--cases"].split(",")] if args.get("--cases") else None
-        if cases and not any(w in case_key(spec["name"]) for w in cases for spec in CASES):
-            sys.exit("--cases: %s names none of %s" % (args["--cases"], "; ".join(c["name"] for c in CASES)))
+        cases = options.chosen_names(args.get("--cases"), [c["name"] for c in CASES], "--cases")
         data = measure(labels, stored, cases)
         with open(path, "w") as f:
             json.dump(data, f, indent=1)
