@@ -6,6 +6,7 @@ slideMPM each solve for the entry that reproduces the observation:
 - Finneidfjord's outrunner block on a constant basal resistance s_b (the paper: a runout of 1380 m needs s_b below
   60 Pa, against a static limit of 161 Pa), checked against the rigid block's equation of motion on the tutorial's
   base, which gives the exact s_b for a block that stays rigid; the scene's end at 1200 s, so that every run stops;
+  slideFoam run once with slideDAM's answer (check_at; since session 86, about 70 min on 2 MPI ranks);
 - the same block hydroplaning (s_b = 0.5 rho_w C_F V^2): the drag coefficient C_F for 1380 m (the paper takes
   C_F = 0.003 from De Blasio et al. 2004 and gets 1381 m with its DAM and 1400 m with its MPM), with the rigid block
   again, and the end at 1200 s again; slideMPM run once with slideDAM's answer (check_at);
@@ -37,21 +38,24 @@ TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(TOP, "validation", "lib"))
 import options  # noqa: E402
 import rigid_block  # noqa: E402
-from scene_variants import split_key  # noqa: E402
 from cfdcase import copy_scene  # noqa: E402
 from plotting import pyplot  # noqa: E402
-from runner import run_method, run_tool, slidefoam_env  # noqa: E402
+from runner import run_tool, which  # noqa: E402
+import scene_variants  # noqa: E402
+from scene_variants import run_one, split_key  # noqa: E402
+from slidefoam_io import read_summary  # noqa: E402
 
 TOLERANCE = 0.01
 METHODS = ("slideDAM", "slideMPM", "slideFoam")
 STUDIES = [
     {"name": "Finneidfjord block, constant s_b", "tutorial": "tutorials/finneidfjord", "constantResistance": 100,
      "find": ("base/s_b", 20.0, 160.0), "unit": "Pa", "set": {"system/controlDict:endTime": "1200"},
-     "target": {"slideDAM": 1380.0, "slideMPM": 1380.0},
+     "checkOnly": ("slideFoam",),
+     "target": {"slideDAM": 1380.0, "slideMPM": 1380.0, "slideFoam": 1380.0},
      "paper": "below 60 Pa (DAM and MPM)", "rigid": "s_b"},
     {"name": "Finneidfjord block, hydroplaning", "tutorial": "tutorials/finneidfjord",
      "find": ("base/C_F", 0.001, 0.03), "unit": "", "set": {"system/controlDict:endTime": "1200"},
-     "tolerance": 0.002, "mpmCheckOnly": True,
+     "tolerance": 0.002, "checkOnly": ("slideMPM",),
      "target": {"slideDAM": 1380.0, "slideMPM": 1380.0},
      "paper": "0.003 taken (De Blasio et al. 2004): 1381 m (DAM), 1400 m (MPM)", "rigid": "C_F"},
     {"name": "Mediterranean escarpment", "tutorial": "tutorials/mediterraneanEscarpment",
@@ -66,8 +70,11 @@ STUDIES = [
 
 
 def foam_dictionary(path, *args):
-    subprocess.run(["foamDictionary", "-precision", "15"] + list(args) + [path], check=True,
-                   stdout=subprocess.DEVNULL, env=slidefoam_env())
+    """foamDictionary's output on the dictionary at path; its failure stops the study with what it said."""
+    rc, out = scene_variants.foam_dictionary(*(list(args) + [path]))
+    if rc != 0:
+        raise SystemExit("foamDictionary %s %s failed:\n%s" % (" ".join(args), path, out[-1500:]))
+    return out
 
 
 def constant_resistance(case, s_b):
@@ -84,8 +91,7 @@ def scene_numbers(case):
     scene = os.path.join(case, "constant", "sceneProperties")
 
     def value(key):
-        return subprocess.run(["foamDictionary", "-precision", "15", "-entry", key, "-value", scene],
-                              stdout=subprocess.PIPE, env=slidefoam_env(), check=True).stdout.decode().strip()
+        return foam_dictionary(scene, "-entry", key, "-value").strip()
     points = [float(v) for v in value("base/points").replace("(", " ").replace(")", " ").split()]
     return (float(value("slide/length")), float(value("slide/height")), float(value("slide/density")),
             float(value("base/rhoWater")), list(zip(points[0::2], points[1::2])), float(value("g")))
@@ -117,10 +123,13 @@ def back_analyse(case, method, study, out, threads=None):
                       "failed": r.get("failed") if r.get("observed") is None else None} for r in j["runs"]]}
 
 
-def check_at(case, study, value, out):
-    """slideMPM run once with slideDAM's answer: where the two methods' runouts agree to a fraction of the
-    tolerance at every value both ran (the rigid block on hydroplaning: -0.012 % at C_F 0.001, 0.0285 and 0.03), a
-    search of its own would cost an hour to find the same value within a range the runout is nearly blind over."""
+def check_at(case, study, value, out, method, threads):
+    """The method run once with slideDAM's answer, where a search of its own would cost hours to find what that
+    run tells: slideMPM on the hydroplaning block, whose runout agrees with slideDAM's to a fraction of the
+    tolerance at every value both ran (-0.012 % at C_F 0.001, 0.0285 and 0.03) over a range of C_F the runout is
+    nearly blind to; slideFoam on the constant s_b, an hour a run at the tutorial's maxDeltaT 0.005 s, whose runout
+    there against slideDAM's and the rigid block's is its error, and with the runout's slope (0.3 % for 1 % on s_b)
+    says how far its own answer would lie from slideDAM's."""
     import shutil
     import time
     if os.path.exists(out):
@@ -131,7 +140,10 @@ def check_at(case, study, value, out):
         f, path = split_key(key)
         foam_dictionary(os.path.join(out, f), "-entry", path, "-set", v)
     t0 = time.time()
-    s, _ = run_method("slideMPM", out, env={"OMP_NUM_THREADS": "1", "OMP_PROC_BIND": "false"})
+    rc, _ = run_one(out, which(method), method, threads)
+    if rc != 0:
+        raise SystemExit("%s failed on %s: see its logs there" % (method, out))
+    s = read_summary(os.path.join(out, "postProcessing", method, "summary.json"))
     row = {"value": value, "runout": s["runout_m"], "atRest": s["at_rest"], "failed": None}
     return {"result": {"outcome": "check", "runs": 1, "best": {"value": value, "observed": s["runout_m"],
                                                                "at_rest": s["at_rest"]},
@@ -185,9 +197,10 @@ def measure(methods, stored, studies=None):
     def one(job):
         k, method, threads = job
         study, folder, case, _ = cases[k]
-        if method == "slideMPM" and study.get("mpmCheckOnly"):
+        if method in study.get("checkOnly", ()):
             dam = ([f for (j, m, _), f in done if j == k and m == "slideDAM"] or [data[k]["slideDAM"]])[0]["result"]
-            return job, check_at(case, study, dam["best"]["value"], os.path.join(folder, "slideMPMcheck"))
+            return job, check_at(case, study, dam["best"]["value"], os.path.join(folder, method + "check"), method,
+                                 threads)
         return job, back_analyse(case, method, study, os.path.join(folder, method), threads)
     done = [one(job) for job in dam_jobs]
     with ThreadPoolExecutor(max_workers=2) as pool:

@@ -46,7 +46,7 @@ def scene_numbers(tutorial):
     path = os.path.join(top, tutorial, "constant", "sceneProperties")
 
     def value(key, default=None):
-        rc, out = foam_dictionary("-precision", "15", "-entry", key, "-value", path)
+        rc, out = foam_dictionary("-entry", key, "-value", path)
         if rc != 0:
             if default is None:
                 raise SystemExit("%s: no entry '%s'" % (path, key))

@@ -36,8 +36,11 @@ def split_key(key):
 
 
 def foam_dictionary(*args):
-    p = subprocess.run(["foamDictionary"] + list(args), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                       env=slidefoam_env())
+    """OpenFOAM's foamDictionary with these arguments: (exit status, output). It writes the whole file back on
+    -set, every number at its precision (6 digits by default: a polyline vertex at 1054.911 m came back as
+    1054.91), and reads -value at it too; 15 digits give back any decimal of up to 15."""
+    p = subprocess.run(["foamDictionary", "-precision", "15"] + list(args), stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, env=slidefoam_env())
     return p.returncode, p.stdout.decode(errors="replace")
 
 
@@ -104,9 +107,7 @@ def prepare_run(case, run_dir, method, fixed, values, digest):
         shutil.copytree(os.path.join(case, sub), os.path.join(run_dir, sub), ignore=shutil.ignore_patterns("polyMesh"))
     for key, value in list(fixed.items()) + list(values.items()):
         f, path = split_key(key)
-        # foamDictionary writes the whole file back, every number at its precision (6 digits by default: a
-        # polyline vertex at 1054.911 m came back as 1054.91); 15 digits give back any decimal of up to 15.
-        rc, out = foam_dictionary("-precision", "15", "-entry", path, "-set", value, os.path.join(run_dir, f))
+        rc, out = foam_dictionary("-entry", path, "-set", value, os.path.join(run_dir, f))
         if rc != 0:
             detail = " ".join(line.strip() for line in out.splitlines() if line.strip() and "FOAM" not in line)
             raise VariantError("%s: foamDictionary could not set '%s' to %s (key '%s'): %s"
