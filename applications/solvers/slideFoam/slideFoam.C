@@ -263,7 +263,7 @@ int main(int argc, char *argv[])
         if (scene.control.stopAtRest && runout.turned())
         {
             Info<< "The slide's downslope motion stopped at time " << runTime.timeName()
-                << " s (hydroplaning holds nothing at rest)" << nl << endl;
+                << " s on a slope it climbs (its base would let it slide back)" << nl << endl;
             if (!runTime.writeTime())
             {
                 runTime.writeNow();

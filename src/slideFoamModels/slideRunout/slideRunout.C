@@ -455,15 +455,27 @@ bool Foam::functionObjects::slideRunout::execute()
     topShareMax_ = max(topShareMax_, s.topVolume/max(initialVolume_, VSMALL));
     state_ = s;
 
-    // As slideMPM and slideDAM end a hydroplaning run where the downslope motion stops.
+    // As slideMPM and slideDAM end a run where the downslope motion stops and the
+    // base could not hold the slide: always on a hydroplaning base, and on a
+    // frictional one where the base under the slide rises towards its front (an s_b
+    // below the adverse slope's pull lets it slide back; on a downslope a stopping
+    // slide's momentum may turn before it is at rest).
     scalar momentum = 0;
     forAll(colAVU, c) momentum += rho*colAVU[c]/depth_;
     // A turn needs motion first: released at rest, the first steps' momentum is of
     // round-off size and may change sign (it did at 6 ms on the Finneidfjord block).
     moved_ = moved_ || momentum > scene_.control.restVelocity*s.sample.mass;
-    turned_ = turned_ ||
-        (scene_.interface.type == slide::scene::Interface::Type::hydroplaning && moved_
-         && time_.timeIndex() > time_.startTimeIndex() && downslopeMomentum_ > 0 && momentum <= 0);
+    if
+    (
+        !turned_ && moved_ && time_.timeIndex() > time_.startTimeIndex()
+     && downslopeMomentum_ > 0 && momentum <= 0
+    )
+    {
+        using Type = slide::scene::Interface::Type;
+        const bool climbing = scene_.interface.type == Type::frictional && front >= 0
+            && scene_.base.point(s.sample.front + s0).z > scene_.base.point(s.sample.rear + s0).z;
+        turned_ = scene_.interface.type == Type::hydroplaning || climbing;
+    }
     downslopeMomentum_ = momentum;
 
     if (time_.writeTime() || time_.timeIndex() == time_.startTimeIndex())

@@ -34,7 +34,8 @@ generated from SlideFoam scenes by slideFoamCase:
               down: faces not aligned with the axes) runs as the planar scene in
               the slope's frame; over a kink onto a gentler slope it runs shorter;
               slide area, volume and alpha bounds kept on both; a block hydroplaning
-              into an adverse slope stops where its downslope motion first stops
+              into an adverse slope, or on a frictional base whose s_b cannot hold it
+              there, stops where its downslope motion first stops
   plug        the Finneidfjord block at H0/2 with conservePlugMomentum stays a plug
               (its cells at the viscosity cap) and slides as the rigid block does
   hydrostatic the escarpment tutorial's slide made too strong to move, on its polyline
@@ -802,6 +803,27 @@ def test_polyline(work):
     check(abs(s["runout_m"]/travel - 1) < 0.08, "hydroplaning block climbing 5 deg: front stopped %.3f m from "
           "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], travel))
     check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6, "the state where it stopped is the last row of runout.dat")
+
+    # The same climb on a frictional base of s_b 50 Pa, below the adverse slope's pull
+    # (rho g H0 sin 5 deg = 275 Pa) and the downslope's (189 Pa): stopped, the block
+    # would slide back and then down again, so the run ends where its downslope motion
+    # first stops, as slideMPM ends it. Until session 86 only a hydroplaning base ended
+    # there: the Finneidfjord block on its constant s_b slid back down Zone D's flank.
+    fclimb = polyline_case(work, "polyline_block_frictional_climb", [(0, 0), (2.4, -2.4*t), (8, -2.4*t + 5.6*up)],
+                           scene={"s_uo": 2000, "rearWall": "no"}, interface="interface frictional;\n    s_b 50;",
+                           end=8.0, control={"stopAtRest": "yes"})
+    run_slidefoam(fclimb)
+    r, s = runout(fclimb), summary(fclimb)
+    travel, time, _ = block_following_base(2.4/np.cos(np.arctan(t)), np.arctan(t), -np.arctan(up),
+                                           drag=lambda v: 50.0)
+    check(s["at_rest"] and s["end_time_s"] < 7.0, "block climbing 5 deg on s_b 50 Pa: the run ends where its "
+          "downslope motion stops, at %.2f s (a block following the base: %.2f s), at rest %s"
+          % (s["end_time_s"], time, s["at_rest"]))
+    check(abs(s["runout_m"]/travel - 1) < 0.08, "block climbing 5 deg on s_b 50 Pa: front stopped %.3f m from "
+          "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], travel))
+    check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6 and max(r["front"]) - r["front"][-1] < 0.02,
+          "block climbing on s_b 50 Pa: runout.dat ends at the stop, %.3f m behind its furthest front"
+          % (max(r["front"]) - r["front"][-1]))
 
     # cfdDict conservePlugMomentum (the Finneidfjord tutorial's): the momentum the
     # 2nd and 3rd pressure correctors take is given back and the running mean of the
