@@ -6,7 +6,8 @@ slideMPM each solve for the entry that reproduces the observation:
 - Finneidfjord's outrunner block on a constant basal resistance s_b (the paper: a runout of 1380 m needs s_b below
   60 Pa, against a static limit of 161 Pa), checked against the rigid block's equation of motion on the tutorial's
   base, which gives the exact s_b for a block that stays rigid; the scene's end at 1200 s, so that every run stops;
-  slideFoam run once with slideDAM's answer (check_at; since session 86, about 70 min on 2 MPI ranks);
+  slideFoam run once with slideDAM's answer (check_at; since session 86, about 70 min on 2 MPI ranks; its block runs
+  5.9 % beyond the rigid block there, ../cfd/README.md);
 - the same block hydroplaning (s_b = 0.5 rho_w C_F V^2): the drag coefficient C_F for 1380 m (the paper takes
   C_F = 0.003 from De Blasio et al. 2004 and gets 1381 m with its DAM and 1400 m with its MPM), with the rigid block
   again, and the end at 1200 s again; slideMPM run once with slideDAM's answer (check_at);
@@ -21,7 +22,7 @@ Each at the tutorial's set-up (Case 3: Table 1's, slideDAM 800 columns, slideMPM
 H0/10 with H0/40 on the base and the tutorials' maxDeltaT 0.05 s), the
 tolerance 1 % of the target (0.2 % for C_F, to which the runout is nearly blind). slideMPM's searches run two at a
 time on one thread each. Writes backAnalysis.json, backAnalysis.md and backAnalysis.png here; the runs stay in
-platforms/validation-work/backAnalysis. About two hours on 2 cores.
+platforms/validation-work/backAnalysis. About three hours on 2 cores.
 
 Usage: validation/backAnalysis/backAnalysis.py [--stored] [--methods M1,M2] [--studies S1,S2]
   --stored: redraw backAnalysis.md and backAnalysis.png from backAnalysis.json without running
