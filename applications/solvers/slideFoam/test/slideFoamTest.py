@@ -785,45 +785,33 @@ def test_polyline(work):
     check(abs(travel/following - 1) < 0.08, "strong block over a kink (3.43 to 1.7 deg), frictionless: front moved "
           "%.3f m in 1.5 s, a block following the base %.3f m (within 8 %%)" % (travel, following))
 
-    # The same block on a hydroplaning base (s_b = 0.5 rho_w C_F V^2) that turns
-    # into an adverse 5 deg slope: the water film holds nothing at rest, so the
-    # run must end where the block's downslope motion first stops, as slideMPM
-    # and slideDAM end it, not slide back and forth until endTime.
+    # The same block turning into an adverse 5 deg slope on a base that cannot hold
+    # it there: hydroplaning (s_b = 0.5 rho_w C_F V^2), whose water film holds nothing
+    # at rest, and a frictional s_b of 50 Pa, below the adverse slope's pull
+    # (rho g H0 sin 5 deg = 275 Pa) and the downslope's (189 Pa). Stopped, the block
+    # would slide back (and on s_b down again), so the run must end where its
+    # downslope motion first stops, as slideMPM and slideDAM end it, not slide back
+    # and forth until endTime. Until session 86 only a hydroplaning base ended there:
+    # the Finneidfjord block on a constant s_b slid back down Zone D's flank.
     up = np.tan(np.radians(5.0))
-    climb = polyline_case(work, "polyline_block_hydroplaning", [(0, 0), (2.4, -2.4*t), (8, -2.4*t + 5.6*up)],
-                          scene={"s_uo": 2000, "rearWall": "no"}, interface="interface hydroplaning;\n    C_F 0.5;",
-                          end=8.0, control={"stopAtRest": "yes"})
-    run_slidefoam(climb)
-    r, s = runout(climb), summary(climb)
-    travel, time, _ = block_following_base(2.4/np.cos(np.arctan(t)), np.arctan(t), -np.arctan(up),
-                                        drag=lambda v: 0.5*1000.0*0.5*v**2)   # rho_w, C_F 0.5
-    check(s["at_rest"] and s["end_time_s"] < 7.0, "hydroplaning block climbing 5 deg: the run ends where its "
-          "downslope motion stops, at %.2f s (a block following the base: %.2f s), at rest %s"
-          % (s["end_time_s"], time, s["at_rest"]))
-    check(abs(s["runout_m"]/travel - 1) < 0.08, "hydroplaning block climbing 5 deg: front stopped %.3f m from "
-          "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], travel))
-    check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6, "the state where it stopped is the last row of runout.dat")
-
-    # The same climb on a frictional base of s_b 50 Pa, below the adverse slope's pull
-    # (rho g H0 sin 5 deg = 275 Pa) and the downslope's (189 Pa): stopped, the block
-    # would slide back and then down again, so the run ends where its downslope motion
-    # first stops, as slideMPM ends it. Until session 86 only a hydroplaning base ended
-    # there: the Finneidfjord block on its constant s_b slid back down Zone D's flank.
-    fclimb = polyline_case(work, "polyline_block_frictional_climb", [(0, 0), (2.4, -2.4*t), (8, -2.4*t + 5.6*up)],
-                           scene={"s_uo": 2000, "rearWall": "no"}, interface="interface frictional;\n    s_b 50;",
-                           end=8.0, control={"stopAtRest": "yes"})
-    run_slidefoam(fclimb)
-    r, s = runout(fclimb), summary(fclimb)
-    travel, time, _ = block_following_base(2.4/np.cos(np.arctan(t)), np.arctan(t), -np.arctan(up),
-                                           drag=lambda v: 50.0)
-    check(s["at_rest"] and s["end_time_s"] < 7.0, "block climbing 5 deg on s_b 50 Pa: the run ends where its "
-          "downslope motion stops, at %.2f s (a block following the base: %.2f s), at rest %s"
-          % (s["end_time_s"], time, s["at_rest"]))
-    check(abs(s["runout_m"]/travel - 1) < 0.08, "block climbing 5 deg on s_b 50 Pa: front stopped %.3f m from "
-          "its start, a block following the base %.3f m (within 8 %%)" % (s["runout_m"], travel))
-    check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6 and max(r["front"]) - r["front"][-1] < 0.02,
-          "block climbing on s_b 50 Pa: runout.dat ends at the stop, %.3f m behind its furthest front"
-          % (max(r["front"]) - r["front"][-1]))
+    for name, interface, drag in (
+            ("hydroplaning", "interface hydroplaning;\n    C_F 0.5;", lambda v: 0.5*1000.0*0.5*v**2),  # rho_w, C_F
+            ("frictional s_b 50 Pa", "interface frictional;\n    s_b 50;", lambda v: 50.0)):
+        climb = polyline_case(work, "polyline_block_climb_" + name.split()[0], [(0, 0), (2.4, -2.4*t),
+                                                                                (8, -2.4*t + 5.6*up)],
+                              scene={"s_uo": 2000, "rearWall": "no"}, interface=interface,
+                              end=8.0, control={"stopAtRest": "yes"})
+        run_slidefoam(climb)
+        r, s = runout(climb), summary(climb)
+        travel, time, _ = block_following_base(2.4/np.cos(np.arctan(t)), np.arctan(t), -np.arctan(up), drag=drag)
+        check(s["at_rest"] and s["end_time_s"] < 7.0, "%s block climbing 5 deg: the run ends where its downslope "
+              "motion stops, at %.2f s (a block following the base: %.2f s), at rest %s"
+              % (name, s["end_time_s"], time, s["at_rest"]))
+        check(abs(s["runout_m"]/travel - 1) < 0.08, "%s block climbing 5 deg: front stopped %.3f m from its start, "
+              "a block following the base %.3f m (within 8 %%)" % (name, s["runout_m"], travel))
+        check(abs(r["time"][-1] - s["end_time_s"]) < 1e-6 and max(r["front"]) - r["front"][-1] < 0.02,
+              "%s block climbing: the state where it stopped is the last row of runout.dat, %.3f m behind its "
+              "furthest front" % (name, max(r["front"]) - r["front"][-1]))
 
     # cfdDict conservePlugMomentum (the Finneidfjord tutorial's): the momentum the
     # 2nd and 3rd pressure correctors take is given back and the running mean of the
