@@ -43,7 +43,7 @@ from cfdcase import copy_scene  # noqa: E402
 from plotting import pyplot  # noqa: E402
 from runner import run_tool, which  # noqa: E402
 import scene_variants  # noqa: E402
-from scene_variants import run_one, split_key  # noqa: E402
+from scene_variants import VariantError, binaries, prepare_run, run_one, tree_digest  # noqa: E402
 from slidefoam_io import read_summary  # noqa: E402
 
 TOLERANCE = 0.01
@@ -130,26 +130,24 @@ def check_at(case, study, value, out, method, threads):
     tolerance at every value both ran (-0.012 % at C_F 0.001, 0.0285 and 0.03) over a range of C_F the runout is
     nearly blind to; slideFoam on the constant s_b, an hour a run at the tutorial's maxDeltaT 0.005 s, whose runout
     there against slideDAM's and the rigid block's is its error, and with the runout's slope (0.3 % for 1 % on s_b)
-    says how far its own answer would lie from slideDAM's."""
-    import shutil
+    says how far its own answer would lie from slideDAM's. Set up as slideSweep sets up its runs, and kept where
+    the case's files, the method's binaries and the value are those of the run already there."""
     import time
-    if os.path.exists(out):
-        shutil.rmtree(out)
-    shutil.copytree(case, out)
-    for key, v in list(study.get("set", {}).items()) + [(study["find"][0], "%.10g" % value),
-                                                       ("system/mpmDict:writeFields", "no")]:
-        f, path = split_key(key)
-        foam_dictionary(os.path.join(out, f), "-entry", path, "-set", v)
+    fixed = dict(study.get("set", {}), **{"system/mpmDict:writeFields": "no"})
+    try:
+        kept = prepare_run(case, out, method, fixed, {study["find"][0]: "%.10g" % value},
+                           tree_digest(case, binaries(method)))
+    except VariantError as e:
+        raise SystemExit(str(e))
     t0 = time.time()
-    rc, _ = run_one(out, which(method), method, threads)
-    if rc != 0:
+    if not kept and run_one(out, which(method), method, threads)[0] != 0:
         raise SystemExit("%s failed on %s: see its logs there" % (method, out))
     s = read_summary(os.path.join(out, "postProcessing", method, "summary.json"))
     row = {"value": value, "runout": s["runout_m"], "atRest": s["at_rest"], "failed": None}
     return {"result": {"outcome": "check", "runs": 1, "best": {"value": value, "observed": s["runout_m"],
                                                                "at_rest": s["at_rest"]},
                        "message": "slideDAM's %s %.6g: runout %.2f m" % (study["find"][0], value, s["runout_m"])},
-            "wall": time.time() - t0, "runs": [row]}
+            "wall": s["wall_time_s"] if kept else time.time() - t0, "runs": [row]}
 
 
 def methods_of(study):
