@@ -10,8 +10,9 @@ slideMPM each solve for the entry that reproduces the observation:
   5.9 % beyond the rigid block there, ../cfd/README.md);
 - the same block hydroplaning (s_b = 0.5 rho_w C_F V^2): the drag coefficient C_F for 1380 m (the paper takes
   C_F = 0.003 from De Blasio et al. 2004 and gets 1381 m with its DAM and 1400 m with its MPM), with the rigid block
-  again, and the end at 1200 s again; slideMPM and slideFoam run once with slideDAM's answer (check_at; slideFoam
-  since session 87);
+  again, and the end at 1200 s again; slideMPM run once with slideDAM's answer (check_at; slideFoam not: its block
+  stops at about 480 s, nearly two hours on 2 MPI ranks; session 87 measured its speed on Zone C instead,
+  ../cfd/README.md);
 - the Mediterranean escarpment: the intact strength s_uo for the observed 420 m (the paper's laboratory value is
   15 kPa, with which its DAM ran 462 m and its MPM 444 m), asked of slideFoam too since session 85 (two to five
   minutes a run on 2 MPI ranks, its search about 25 min);
@@ -57,8 +58,8 @@ STUDIES = [
      "paper": "below 60 Pa (DAM and MPM)", "rigid": "s_b"},
     {"name": "Finneidfjord block, hydroplaning", "tutorial": "tutorials/finneidfjord",
      "find": ("base/C_F", 0.001, 0.03), "unit": "", "set": {"system/controlDict:endTime": "1200"},
-     "tolerance": 0.002, "checkOnly": ("slideMPM", "slideFoam"),
-     "target": {"slideDAM": 1380.0, "slideMPM": 1380.0, "slideFoam": 1380.0},
+     "tolerance": 0.002, "checkOnly": ("slideMPM",),
+     "target": {"slideDAM": 1380.0, "slideMPM": 1380.0},
      "paper": "0.003 taken (De Blasio et al. 2004): 1381 m (DAM), 1400 m (MPM)", "rigid": "C_F"},
     {"name": "Mediterranean escarpment", "tutorial": "tutorials/mediterraneanEscarpment",
      "find": ("rheology/s_uo", 8000.0, 30000.0), "unit": "Pa",
