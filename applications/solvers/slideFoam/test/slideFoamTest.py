@@ -1040,6 +1040,17 @@ def test_layer(work):
           "on 32 (within 2.5 %% on 32, and at most half the error on 16)" % (100*errs[0], 100*errs[1]))
 
 
+def run_test_app(case, log, app, keys, *args):
+    """Run one of slideFoam's test applications in the case and read the `key value` lines it prints."""
+    run(case, which(app), *args, log=log)
+    values = {}
+    for line in open(os.path.join(case, log)):
+        parts = line.split()
+        if len(parts) == 2 and parts[0] in keys:
+            values[parts[0]] = float(parts[1])
+    return values
+
+
 def test_reconstruction(work):
     # Cells twice as high as long: on square cells sum Sf^ Sf is isotropic whatever the rotation.
     c = os.path.join(work, "reconstruction")
@@ -1065,13 +1076,7 @@ def test_reconstruction(work):
     run(c, "blockMesh")
 
     def measure(log):
-        run(c, which("fluxReconstructionTest"), log=log)
-        values = {}
-        for line in open(os.path.join(c, log)):
-            parts = line.split()
-            if len(parts) == 2 and parts[0] in ("offDiagonal", "ourError", "fvcReconstructError"):
-                values[parts[0]] = float(parts[1])
-        return values
+        return run_test_app(c, log, "fluxReconstructionTest", ("offDiagonal", "ourError", "fvcReconstructError"))
 
     aligned = measure("log.aligned")
     check(aligned["offDiagonal"] == 0.0 and aligned["ourError"] < 1e-12,
@@ -1096,15 +1101,9 @@ def test_transposeShear(work):
     # block's ends does not sum to the flux: on the Finneidfjord block on a
     # constant s_b that pushed it forward by 24 Pa (validation/cfd/README.md).
     def measure(case, start, end):
-        run(case, which("baseTransposeShearTest"), str(start), str(end), log="log.baseTransposeShearTest")
-        values = {}
-        for line in open(os.path.join(case, "log.baseTransposeShearTest")):
-            parts = line.split()
-            if len(parts) == 2 and parts[0] in ("slippingFaces", "baseFaces", "explicitShear", "takenOutShear",
-                                                "takenOutWhole", "source", "largestShear", "largestFaceDifference",
-                                                "normalDifference"):
-                values[parts[0]] = float(parts[1])
-        return values
+        return run_test_app(case, "log.baseTransposeShearTest", "baseTransposeShearTest",
+                            ("slippingFaces", "baseFaces", "explicitShear", "takenOutShear", "takenOutWhole", "source",
+                             "largestShear", "largestFaceDifference", "normalDifference"), str(start), str(end))
 
     frictional = "interface frictional;\n    s_b 10;"
     planar = make_case(FLUME, work, "transposeShear_planar", cfd={"cellsPerHeight": 10, "reach": 3,
