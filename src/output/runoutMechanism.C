@@ -122,7 +122,13 @@ Mechanism detectMechanism(const std::vector<MaterialSample>& samples, const Mech
     endPart();
     m.bodies += std::max(slabs, 1);
     // Grabens: surface depressions deeper than H0/5 below the crests on both sides
-    // (crests = running maxima within 2 H0), found on the column tops.
+    // (crests = running maxima within 2 H0), found on the column tops, and deeper
+    // than one and a half samples: a cell less than half slide is no sample, so on
+    // a mesh of H0/4 (the Finneidfjord block's) a top cell that the interface
+    // leaves partly empty drops its column a whole cell, a quarter of H0.
+    double sampleHeight = 0.0;
+    for (const MaterialSample& p : samples) sampleHeight = std::max(sampleHeight, 2.0*p.halfHeight);
+    const double grabenDepth = std::max(0.2*H0, 1.5*sampleHeight);
     const int reach = std::max(2, static_cast<int>(std::ceil(2.0*H0/width)));
     int c = 0;
     while (c < nCol)
@@ -136,7 +142,7 @@ Mechanism detectMechanism(const std::vector<MaterialSample>& samples, const Mech
         {
             if (top[k] >= 0.0 && top[k] < top[c]) localMin = false;
         }
-        if (localMin && std::min(left, right) - top[c] > 0.2*H0)
+        if (localMin && std::min(left, right) - top[c] > grabenDepth)
         {
             ++m.grabens;
             c += reach;   // one graben per trough

@@ -16,8 +16,8 @@ CLIMB = {"length": 40.0, "height": 2.0, "density": 500.0, "s_uo": 3e4, "s_b": 50
          "points": [(0.0, 0.0), (99.86295, -5.23360), (299.74113, 1.74588)]}
 
 
-def runout(points, length, height, density, g=9.81, s_b=None, c_f=None, rho_water=1000.0):
-    from scipy.integrate import solve_ivp
+def base_elevation(points):
+    """The base's elevation as a function of the arc length along it (extended straight past its ends)."""
     arc, z = [0.0], [points[0][1]]
     for (x0, z0), (x1, z1) in zip(points, points[1:]):
         arc.append(arc[-1] + math.hypot(x1 - x0, z1 - z0))
@@ -26,6 +26,29 @@ def runout(points, length, height, density, g=9.81, s_b=None, c_f=None, rho_wate
     def elevation(s):
         k = next((k for k in range(len(arc) - 2) if s <= arc[k + 1]), len(arc) - 2)
         return z[k] + (z[k + 1] - z[k])*(s - arc[k])/(arc[k + 1] - arc[k])
+    return elevation
+
+
+def speed_on_contact(points, area, density, s_b, times, fronts, rears, v0, g=9.81):
+    """The block's speed by the same law when its footprint is the one a method measured (front and rear along
+    the base at the given times) instead of its starting length: rho' A dV/dt = rho' g A (drop across the
+    footprint)/L - s_b L, from v0 at times[0], the footprint linear in time between the samples. A method whose
+    block stretches is braked by s_b over the longer contact; this separates that from an error in the base's law."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+    elevation = base_elevation(points)
+
+    def rhs(t, y):
+        front, rear = (float(np.interp(t, times, v)) for v in (fronts, rears))
+        length = front - rear
+        return [g*(elevation(rear) - elevation(front))/length - s_b*length/(density*area)]
+    sol = solve_ivp(rhs, (times[0], times[-1]), [v0], t_eval=times, rtol=1e-10, atol=1e-10, max_step=1.0)
+    return sol.y[0]
+
+
+def runout(points, length, height, density, g=9.81, s_b=None, c_f=None, rho_water=1000.0):
+    from scipy.integrate import solve_ivp
+    elevation = base_elevation(points)
 
     def rhs(t, y):
         rear, v = y

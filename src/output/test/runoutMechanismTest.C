@@ -56,11 +56,14 @@ MaterialSample cell(double s, double h, double height, double velocity, double x
 // as functions of (s, h).
 void addMaterial(std::vector<MaterialSample>& out, double s0, double s1, const std::function<double(double)>& height,
                  const std::function<double(double, double)>& velocity,
-                 const std::function<double(double, double)>& xi)
+                 const std::function<double(double, double)>& xi, double cellHeight = dy)
 {
     for (double s = s0 + 0.5*dx; s < s1; s += dx)
     {
-        for (double h = 0.5*dy; h < height(s); h += dy) out.push_back(cell(s, h, dy, velocity(s, h), xi(s, h)));
+        for (double h = 0.5*cellHeight; h < height(s); h += cellHeight)
+        {
+            out.push_back(cell(s, h, cellHeight, velocity(s, h), xi(s, h)));
+        }
     }
 }
 
@@ -122,6 +125,34 @@ TEST(RunoutMechanism, BodiesPartedByEmptyColumnsOrARemouldedFilmBreakAway)
     EXPECT_EQ(detectMechanism(filmed(10.0, 100.0), view(), clay(false)).bodies, 1);
     EXPECT_EQ(detectMechanism(filmed(10.0, 0.0), view(), clay()).bodies, 1);
     EXPECT_EQ(detectMechanism(filmed(1.0, 100.0), view(), clay()).bodies, 1);
+}
+
+TEST(RunoutMechanism, NotchesOneCoarseCellDeepAreNoGrabens)
+{
+    // A rigid block on cells of H0/4 (the Finneidfjord block's mesh) whose top
+    // cell is missing in 1 m notches every 5 m: a quarter of H0 deep, more than
+    // H0/5, but one cell, which is the interface's noise at that mesh. It slides.
+    const double coarse = 0.25*H0;
+    auto notched = [coarse](double depthInCells)
+    {
+        return [coarse, depthInCells](double s)
+        {
+            return std::fmod(s, 5.0) < 1.0 && s > 2.0 && s < 38.0 ? H0 - depthInCells*coarse : H0;
+        };
+    };
+    MechanismView coarseView = view();
+    coarseView.basalLayer = 2.0*coarse;
+    std::vector<MaterialSample> block;
+    addMaterial(block, 0.0, 40.0, notched(1.0), uniform(10.0), uniform(0.0), coarse);
+    const Mechanism sliding = detectMechanism(block, coarseView, clay(false));
+    EXPECT_EQ(sliding.grabens, 0);
+    EXPECT_EQ(sliding.name, "block sliding");
+    // Two cells deep (half of H0) they are grabens on that mesh too.
+    std::vector<MaterialSample> deep;
+    addMaterial(deep, 0.0, 40.0, notched(2.0), uniform(10.0), uniform(0.0), coarse);
+    const Mechanism spread = detectMechanism(deep, coarseView, clay(false));
+    EXPECT_GE(spread.grabens, 2);
+    EXPECT_EQ(spread.name, "spreading (horsts and grabens)");
 }
 
 TEST(RunoutMechanism, GrabensOrHorstsMeanSpreading)
