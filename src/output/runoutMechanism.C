@@ -75,11 +75,13 @@ Mechanism detectMechanism(const std::vector<MaterialSample>& samples, const Mech
         return std::min(nCol - 1, std::max(0, static_cast<int>((p.s - x0)/width)));
     };
     std::vector<double> top(nCol, -1.0), bottom(nCol, 1e300);
+    double sampleHeight = 0.0;   // the tallest sample: how finely the tops are known
     for (const MaterialSample& p : samples)
     {
         const int c = column(p);
         top[c] = std::max(top[c], p.h + p.halfHeight);
         bottom[c] = std::min(bottom[c], p.h - p.halfHeight);
+        sampleHeight = std::max(sampleHeight, 2.0*p.halfHeight);
     }
     // Bodies: runs of occupied columns separated by at least two empty ones (2 H0/5).
     // On a base that holds what touches it (no-slip), a body sliding away on its
@@ -126,8 +128,6 @@ Mechanism detectMechanism(const std::vector<MaterialSample>& samples, const Mech
     // than one and a half samples: a cell less than half slide is no sample, so on
     // a mesh of H0/4 (the Finneidfjord block's) a top cell that the interface
     // leaves partly empty drops its column a whole cell, a quarter of H0.
-    double sampleHeight = 0.0;
-    for (const MaterialSample& p : samples) sampleHeight = std::max(sampleHeight, 2.0*p.halfHeight);
     const double grabenDepth = std::max(0.2*H0, 1.5*sampleHeight);
     const int reach = std::max(2, static_cast<int>(std::ceil(2.0*H0/width)));
     int c = 0;
