@@ -2,14 +2,16 @@
 """What sets slideFoam's runout of Table 1 Case 8 (a 5 m block of s_uo 5 kPa on a frictional base of s_b 1.8 kPa,
 5 deg): the slide's downslope momentum budget from its written fields, for the default solver and for the two
 halves of cfdDict conservePlugMomentum (PIMPLE restoreCorrectorMomentum; the base's transposeShear runningMean)
-alone and together, and for the scene without Eq. (1)'s rate effect.
+alone and together, for the scene without Eq. (1)'s rate effect, and for the base that exerts all of s_b on every
+face whose cell holds slide (cfdDict baseStrength wholeFace, slideFoam's only base until session 90).
 
 Each second of the run: the slide's momentum P = sum(rho alpha U_x V) per metre of width, dP/dt, the length of
-base under slide (faces whose cell holds alpha > 0.01, whole: the base exerts s_b on any face its slide touches) and
-the base force the budget implies, weight along the slope less dP/dt. A block sliding on such a base is stopped
-by its own length: it decelerates once s_b times its contact passes its weight along the slope (here at 57 m).
+base under slide (faces whose moving cell holds alpha > 0.01) and the slide's share of it (sum of alpha times the
+face's length: the base exerts s_b on that share by default), and the base force the budget implies, weight along
+the slope less dP/dt, over that share. A block sliding on such a base is stopped by its own length: it decelerates
+once s_b times its contact passes its weight along the slope (here at 57 m).
 
-Usage: validation/cfd/frictionalBlock.py [--variants default,restore,transpose,both,rateFree] [--cells 10]
+Usage: validation/cfd/frictionalBlock.py [--variants default,restore,transpose,both,rateFree,wholeFace] [--cells 10]
                                           [--base-refinement 4] [--processors 2] [--work DIR]
 (after ./Allwmake; about 2 min a variant on 2 cores at H0/10, 16 min at H0/20; writes frictionalBlock.md beside this
 script at Table 1's mesh, H0/10 with H0/40 on the base, else frictionalBlock_H0_<cells>.md)"""
@@ -36,6 +38,7 @@ VARIANTS = {
     "transpose": "the base's transposeShear runningMean alone",
     "both": "cfdDict conservePlugMomentum yes (both)",
     "rateFree": "the solver's defaults, the scene without Eq. (1)'s rate effect (eta 0)",
+    "wholeFace": "the solver's defaults, s_b on every face the slide touches (cfdDict baseStrength wholeFace)",
 }
 # Written every second; these rows go into the table.
 REPORT_TIMES = [2, 5, 10, 15, 20, 25, 30, 40, 50]
@@ -65,6 +68,8 @@ def run_variant(variant, work, cells, refinement, processors):
            "reach": "200"}
     if variant == "both":
         cfd["conservePlugMomentum"] = "yes"
+    if variant == "wholeFace":
+        cfd["baseStrength"] = "wholeFace"
     set_method_entries(d, "cfdDict", cfd)
     run(d, which("slideDAM"), "-case", ".")
     prepare(d)
@@ -108,13 +113,14 @@ def budget(d, theta, s_b, rho):
         if U.ndim == 1:
             U = np.tile(U, (len(a), 1))
         P = np.sum(rho * a * U[:, 0] * V) / depth
-        touching = (a[base][order] > 0.01) & (np.abs(U[base][order][:, 0]) > 1e-3)
-        rows.append([float(t), P, np.sum(width * touching)])
+        moving = np.abs(U[base][order][:, 0]) > 1e-3
+        touching = (a[base][order] > 0.01) & moving
+        rows.append([float(t), P, np.sum(width * touching), np.sum(width * a[base][order] * moving)])
     out = []
-    for (t0, P0, L0), (t1, P1, L1) in zip(rows, rows[1:]):
+    for (t0, P0, _, S0), (t1, P1, L1, S1) in zip(rows, rows[1:]):
         dPdt = (P1 - P0) / (t1 - t0)
-        out.append({"t": t1, "P": P1, "dPdt": dPdt, "contact": L1, "base_force": weight - dPdt,
-                    "base_stress": (weight - dPdt) / (0.5 * (L0 + L1)) if L0 + L1 > 0 else None})
+        out.append({"t": t1, "P": P1, "dPdt": dPdt, "contact": L1, "share": S1, "base_force": weight - dPdt,
+                    "base_stress": (weight - dPdt) / (0.5 * (S0 + S1)) if S0 + S1 > 0 else None})
     return {"area": area, "weight": weight, "stall_contact": weight / s_b, "rows": out}
 
 
@@ -161,7 +167,8 @@ def write_report(results, s_b, args):
              "Written by `validation/cfd/frictionalBlock.py --cells %d --base-refinement %d --processors %d`. A 5 m "
              "block of s_uo 5 kPa on a frictional base of s_b = %.0f Pa; its weight along the slope is matched by "
              "s_b under a contact of %.1f m. Contact: the base faces whose cell holds slide (alpha > 0.01) and moves; "
-             "base force: weight along the slope less dP/dt; base stress: that over the contact."
+             "share: the slide's share of them (the sum of alpha times the face's length), on which the base "
+             "exerts s_b by default; base force: weight along the slope less dP/dt; base stress: that over the share."
              % (args.cells, args.base_refinement, args.processors, s_b,
                 next(iter(results.values()))["stall_contact"]),
              "",
@@ -171,7 +178,7 @@ def write_report(results, s_b, args):
         lines.append("| %s | %.1f | %s | %.2f | %.0f |" % (VARIANTS[v], r["runout"],
                      ("at rest by %g s" % r["end"]) if r["at_rest"] else ("%g s, not at rest" % r["end"]),
                      r["thickness"], r["wall"]))
-    lines += ["", "| t [s] | " + " | ".join("%s: front [m], speed [m/s], contact [m], base stress [Pa]" % v
+    lines += ["", "| t [s] | " + " | ".join("%s: front [m], speed [m/s], contact [m], share [m], base stress [Pa]" % v
                                               for v in results) + " |",
               "|---|" + "---|" * len(results)]
     for t in REPORT_TIMES:
@@ -186,8 +193,8 @@ def write_report(results, s_b, args):
                 # Stopped: the stuck faces hold what they need, the stress over the creeping ones means nothing.
                 cells.append("%.1f, %.2f, stopped" % (r["front"][t], r["speed"][t]))
             else:
-                cells.append("%.1f, %.2f, %.1f, %.0f" % (r["front"][t], r["speed"][t], x["contact"],
-                                                         x["base_stress"]))
+                cells.append("%.1f, %.2f, %.1f, %.1f, %.0f" % (r["front"][t], r["speed"][t], x["contact"],
+                                                               x["share"], x["base_stress"]))
         lines.append("| %g | " % t + " | ".join(cells) + " |")
     # Table 1's mesh writes frictionalBlock.md, another mesh frictionalBlock_H0_<cells>.md.
     name = "frictionalBlock" + ("" if (args.cells, args.base_refinement) == (10, 4) else "_H0_%d" % args.cells)

@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
-                      "pressureCoupling", "outerCorrectors", "alongSlopeGravity", "conservePlugMomentum", "shearBandThickness", "rateWallFunction", "faceViscosity",
+                      "pressureCoupling", "outerCorrectors", "alongSlopeGravity", "conservePlugMomentum", "baseStrength", "shearBandThickness", "rateWallFunction", "faceViscosity",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -90,6 +90,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
         }
     }
     c.conservePlugMomentum = d.getBool("conservePlugMomentum", false);
+    if (d.found("baseStrength")) c.baseStrength = d.getWordOneOf("baseStrength", {"slideShare", "wholeFace"});
     c.rateWallFunction = d.getBool("rateWallFunction", false);
     if (c.rateWallFunction && c.regularisation != "cap")
     {
@@ -143,6 +144,7 @@ std::string CfdControls::describe() const
     if (alongSlopeGravity != "pressure") os << ", gravity's along-slope part as a face force";
     os
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
+       << (baseStrength == "wholeFace" ? ", s_b on every base face the slide touches" : "")
        << (rateWallFunction ? ", Eq. (1)'s wall function on the base" : "")
        << (faceViscosity ? ", the slide's viscosity at each face's rate" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;

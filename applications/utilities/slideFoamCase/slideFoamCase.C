@@ -339,6 +339,7 @@ int main(int argc, char** argv)
             : "        type            slideBaseVelocity;   // " + sc.interface.typeName()
               + " base from constant/sceneProperties\n"
               + (c.conservePlugMomentum ? "        transposeShear  runningMean;   // cfdDict conservePlugMomentum\n" : "")
+              + (c.baseStrength == "wholeFace" ? "        baseStrength    wholeFace;   // cfdDict baseStrength\n" : "")
               + "        value           uniform (0 0 0);\n";
         const std::string rearU = sc.slide.rearWall ? "        type            noSlip;\n"
             : "        type            pressureInletOutletVelocity;\n        value           uniform (0 0 0);\n";

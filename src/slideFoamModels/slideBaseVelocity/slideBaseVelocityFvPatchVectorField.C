@@ -20,7 +20,9 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
 )
 :
     directionMixedFvPatchVectorField(p, iF),
-    transposeShearMean_(false)
+    transposeShearMean_(false),
+    slideShare_(true),
+    alphaName_("alpha.slide")
 {
     setStuck();
 }
@@ -32,9 +34,18 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
 )
 :
     directionMixedFvPatchVectorField(p, iF),
-    transposeShearMean_(false)
+    transposeShearMean_(false),
+    slideShare_(true),
+    alphaName_(dict.getOrDefault<word>("alpha", "alpha.slide"))
 {
     setStuck();
+    const word strength = dict.getOrDefault<word>("baseStrength", "slideShare");
+    if (strength != "slideShare" && strength != "wholeFace")
+    {
+        FatalIOErrorInFunction(dict)
+            << "key 'baseStrength': expected slideShare or wholeFace, got " << strength << exit(FatalIOError);
+    }
+    slideShare_ = (strength == "slideShare");
     const word shear = dict.getOrDefault<word>("transposeShear", "nearKinks");
     if (shear != "nearKinks" && shear != "runningMean")
     {
@@ -60,7 +71,9 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
 )
 :
     directionMixedFvPatchVectorField(ptf, p, iF, mapper),
-    transposeShearMean_(ptf.transposeShearMean_)
+    transposeShearMean_(ptf.transposeShearMean_),
+    slideShare_(ptf.slideShare_),
+    alphaName_(ptf.alphaName_)
 {}
 
 
@@ -70,26 +83,43 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
 )
 :
     directionMixedFvPatchVectorField(ptf, iF),
-    transposeShearMean_(ptf.transposeShearMean_)
+    transposeShearMean_(ptf.transposeShearMean_),
+    slideShare_(ptf.slideShare_),
+    alphaName_(ptf.alphaName_)
 {}
 
 
 Foam::scalar Foam::slideBaseVelocityFvPatchVectorField::slipSpeed
 (
-    const slide::scene::Interface& iface, const scalar cellSpeed, const scalar k
+    const slide::scene::Interface& iface, const scalar cellSpeed, const scalar k, const scalar share,
+    const scalar held
 )
 {
     using Type = slide::scene::Interface::Type;
     if (iface.type == Type::noSlip || cellSpeed <= 0) return 0;
+    // The traction the face gives beyond what the ambient's share holds.
+    const scalar c = max(scalar(0), k*cellSpeed - held);
     if (iface.type == Type::frictional)
     {
-        return max(scalar(0), cellSpeed - iface.s_b/k);
+        return max(scalar(0), (c - share*iface.s_b)/k);
     }
-    // Hydroplaning: k (|U_t| - V) = a V^2 with a = 0.5 rho_w C_F; the positive
+    // Hydroplaning: c - k V = a V^2 with a = share 0.5 rho_w C_F; the positive
     // root written without cancellation.
-    const scalar a = 0.5*iface.rhoWater*iface.C_F;
-    if (a <= 0) return cellSpeed;
-    return 2*k*cellSpeed/(k + Foam::sqrt(k*k + 4*a*k*cellSpeed));
+    const scalar a = share*0.5*iface.rhoWater*iface.C_F;
+    if (a <= 0) return c/k;
+    return 2*c/(k + Foam::sqrt(k*k + 4*a*c));
+}
+
+
+Foam::scalar Foam::slideBaseVelocityFvPatchVectorField::ambientViscosity() const
+{
+    // The mixture's own dictionary (incompressibleTwoPhaseMixture registers it):
+    // phases (slide ambient), the ambient Newtonian.
+    const IOdictionary& transport = db().lookupObject<IOdictionary>("transportProperties");
+    const wordList phases(transport.get<wordList>("phases"));
+    const dictionary& ambient = transport.subDict(phases[1]);
+    return dimensionedScalar("rho", dimDensity, ambient).value()
+          *dimensionedScalar("nu", dimViscosity, ambient).value();
 }
 
 
@@ -108,6 +138,14 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
         const vectorField Uc(patchInternalField());
         const vectorField n(patch().nf());
         const scalarField& deltaCoeffs = patch().deltaCoeffs();
+        const scalarField share
+        (
+            slideShare_
+          ? scalarField(min(max(db().lookupObject<volScalarField>(alphaName_)
+                .boundaryField()[patchi].patchInternalField(), scalar(0)), scalar(1)))
+          : scalarField(size(), scalar(1))
+        );
+        const scalar muAmbient = slideShare_ ? ambientViscosity() : 0;
 
         forAll(Uc, facei)
         {
@@ -115,7 +153,10 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
             const scalar speed = mag(Ut);
             const scalar mu = rhow[facei]*nuw[facei];
             const scalar k = mu*deltaCoeffs[facei];
-            const scalar V = slipSpeed(iface, speed, k);
+            // The mixture's viscosity is the phases' shares of theirs: the
+            // ambient's share of the face stays stuck with its own no-slip traction.
+            const scalar held = (1 - share[facei])*muAmbient*deltaCoeffs[facei]*speed;
+            const scalar V = slipSpeed(iface, speed, k, share[facei], held);
             if (V <= 0) continue;   // stuck: the no-slip traction stays within s_b
             // Slipping: the base resists with s_b(V) against the motion (Eq. 5),
             // as the fraction s_b/(k |U_t|) of the no-slip traction on the cell's
@@ -123,7 +164,7 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
             // frictional s_b reversed a creeping plug within one step (s_b dt/(rho h)
             // is 0.1 m/s for Table 1 Case 7) and flipped it back the next: the
             // base chattered about zero mean traction and let the plug creep.
-            const scalar f = iface.basalStrength(V)/(k*speed);
+            const scalar f = (share[facei]*iface.basalStrength(V) + held)/(k*speed);
             valueFraction()[facei] = sqr(n[facei]) + f*(symmTensor::I - sqr(n[facei]));
         }
     }
@@ -364,6 +405,8 @@ void Foam::slideBaseVelocityFvPatchVectorField::write(Ostream& os) const
 {
     fvPatchVectorField::write(os);
     if (transposeShearMean_) os.writeEntry("transposeShear", word("runningMean"));
+    if (!slideShare_) os.writeEntry("baseStrength", word("wholeFace"));
+    if (alphaName_ != "alpha.slide") os.writeEntry("alpha", alphaName_);
     writeEntry("value", os);
 }
 

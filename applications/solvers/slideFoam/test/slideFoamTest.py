@@ -57,6 +57,12 @@ generated from SlideFoam scenes by slideFoamCase:
               its face fluxes to round-off on a mesh rotated 3.43 deg (fvc::reconstruct
               of Debian's v1912 build does not: fluxReconstruction.H) and on the
               unrotated one
+  baseStrength  a 60 m x 2 m block of 15 kPa sliding on a 5 deg frictional base (s_b
+              555 Pa) at H0/2 for 20 s: the base exerts s_b on the slide's share of
+              each face (the default), so the block's mean speed follows the rigid
+              block's law, planar and on a straight polyline; with s_b on every
+              face the slide touches (baseStrength wholeFace) the smeared ends'
+              partly filled cells brake it by about 19 Pa more
   transposeShear  slideBaseVelocity's transposeShear runningMean on a frictional base
               where only the faces under a block slip (planar, and a polyline across
               its kink; baseTransposeShearTest): the shear force it takes out of the
@@ -1089,6 +1095,57 @@ def test_reconstruction(work):
           % rotated["offDiagonal"])
     check(rotated["ourError"] < 1e-12, "rotated 3.43 deg: error %.2g of |U| (fvc::reconstruct of this OpenFOAM: %.3g)"
           % (rotated["ourError"], rotated["fvcReconstructError"]))
+
+
+def test_baseStrength(work):
+    # The block of session 89's probes: its weight along the slope, 855 Pa, less
+    # s_b = 555 Pa pulls it at 0.300 m/s2. At H0/2 the blocks' ends smear over a
+    # metre-long cell, and with s_b on every face whose cell holds any slide those
+    # cells braked it by 19.2 Pa (planar) and 14.2 Pa (polyline) beyond the law
+    # over 20 s, 11.0 and 5.7 Pa at H0/4: a brake first order in the cell
+    # (validation/cfd/README.md). s_b on the slide's share of each face takes the
+    # contact as the sum of alpha dx, the block's own length.
+    top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
+    theta, s_b, rho, height, length = np.radians(5.0), 555.0, 500.0, 2.0, 60.0
+    c, s = np.cos(theta), np.sin(theta)
+    bases = {"planar": "profile planar; angle 5;",
+             "polyline": "profile polyline; points ((0 0) (%.6f %.6f));" % (400*c, -400*s)}
+    pull = rho*9.81*s*height - s_b
+    law = pull/(rho*height)*20.0
+    brake = {}
+    for name, base, strength in (("planar", "planar", None), ("polyline", "polyline", None),
+                                 ("planar, wholeFace", "planar", "wholeFace")):
+        text = ("FoamFile { version 2.0; format ascii; class dictionary; object sceneProperties; }\n"
+                "title \"a block on a frictional base\";\ng 9.81;\n"
+                "slide { shape rectangle; length %g; height %g; rearPosition 0; density %g; }\n"
+                "rheology { model HerschelBulkleyRemoulding; s_uo 15000; eta 0; deltaRem 1; }\n"
+                "base { %s interface frictional; s_b %g; }\nambient { phase light; }\n"
+                % (length, height, rho, bases[base], s_b))
+        case = make_case(os.path.join(top, "tutorials", "finneidfjord"), work,
+                         "baseStrength_" + name.replace(", ", "_"), control={"endTime": 20, "writeInterval": 20},
+                         # The tutorial's plug set-up (its cfdDict, which cfd= replaces): with the solver's
+                         # defaults the transpose flux's noise moves this block by tens of Pa either way
+                         # (measured: a 19 Pa brake planar and an 80 Pa push on the polyline).
+                         cfd=dict({"setting": "fast", "cellsPerHeight": 2, "processors": 1, "reach": 150,
+                                   "behind": 10, "conservePlugMomentum": "yes", "plugCreepRate": "7.383e-4"},
+                                  **({"baseStrength": strength} if strength else {})),
+                         dicts={"constant/sceneProperties": text})
+        prepare(case)
+        check(("baseStrength    wholeFace;" in open(os.path.join(case, "0.orig", "U")).read()) == bool(strength),
+              "%s: 0/U's base says baseStrength wholeFace only where cfdDict asks it" % name)
+        run_slidefoam(case)
+        r = runout(case)
+        k = int(np.argmin(np.abs(np.asarray(r["time"]) - 20.0)))
+        speed = np.sqrt(2*r["kineticEnergy"][k]/r["mass"][k])
+        brake[name] = (law - speed)/20.0*rho*height
+        print("%s: mean speed %.4f m/s at 20 s, the rigid block %.4f m/s: a brake of %.1f Pa beyond s_b"
+              % (name, speed, law, brake[name]))
+    for name in ("planar", "polyline"):
+        check(abs(brake[name]) < 8.0, "%s base, s_b on the slide's share of each face: the block's brake beyond "
+              "s_b = %.0f Pa is %.1f Pa (within 8 Pa)" % (name, s_b, brake[name]))
+    check(brake["planar, wholeFace"] > brake["planar"] + 10.0,
+          "s_b on every face the slide touches brakes the block by %.1f Pa beyond s_b, %.1f Pa more than on the "
+          "slide's share (at least 10 Pa more)" % (brake["planar, wholeFace"], brake["planar, wholeFace"] - brake["planar"]))
 
 
 def test_transposeShear(work):

@@ -37,6 +37,17 @@ int main(int argc, char *argv[])
         IOobject("nu", runTime.timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
         mesh, dimensionedScalar("nu", dimViscosity, 100.0)
     );
+    // The base's strength on each face is the slide's share of it (the wall
+    // cell's alpha) and its ambient's share holds the ambient's no-slip traction.
+    volScalarField alpha
+    (
+        IOobject("alpha.slide", runTime.timeName(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE),
+        mesh
+    );
+    IOdictionary transportProperties
+    (
+        IOobject("transportProperties", runTime.constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE)
+    );
     volVectorField U
     (
         IOobject("U", runTime.timeName(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE),
