@@ -367,7 +367,8 @@ def field_section(field):
     lines = ["### Field cases", "",
              "The tutorials' runs (`field/runs.py`), all three methods on the polyline bases (slideFoam on vertical "
              "columns, gravity down). On the Finneidfjord base all three end where the hydroplaning block's downslope "
-             "motion first stops (the water film holds nothing at rest). A run that ends before rest is compared "
+             "motion first stops (the water film holds nothing at rest; on a frictional base whose s_b cannot hold the "
+             "slide on the slope it climbs, since session 86 slideFoam too). A run that ends before rest is compared "
              "with the others' fronts at its end time, in a line under the table. Geometry and its sensitivity: "
              "`field/sensitivity.md`.", "",
              "| case | paper / observed [m] | method | runout [m] | peak front velocity [m/s] | mechanism | wall [s] |",
