@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
-                      "pressureCoupling", "outerCorrectors", "alongSlopeGravity", "conservePlugMomentum", "baseStrength", "shearBandThickness", "rateWallFunction", "faceViscosity",
+                      "pressureCoupling", "outerCorrectors", "alongSlopeGravity", "conservePlugMomentum", "transposeShear", "baseStrength", "shearBandThickness", "rateWallFunction", "faceViscosity",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -90,6 +90,8 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
         }
     }
     c.conservePlugMomentum = d.getBool("conservePlugMomentum", false);
+    c.transposeShear = d.found("transposeShear") ? d.getWordOneOf("transposeShear", {"nearKinks", "runningMean"})
+                     : c.conservePlugMomentum ? "runningMean" : "nearKinks";
     if (d.found("baseStrength")) c.baseStrength = d.getWordOneOf("baseStrength", {"slideShare", "wholeFace"});
     c.rateWallFunction = d.getBool("rateWallFunction", false);
     if (c.rateWallFunction && c.regularisation != "cap")
@@ -144,6 +146,8 @@ std::string CfdControls::describe() const
     if (alongSlopeGravity != "pressure") os << ", gravity's along-slope part as a face force";
     os
        << (conservePlugMomentum ? ", plug momentum conserved" : "")
+       << (transposeShear == "runningMean" && !conservePlugMomentum ? ", the base's transpose flux's running mean taken out" : "")
+       << (transposeShear == "nearKinks" && conservePlugMomentum ? ", the base's transpose flux kept away from kinks" : "")
        << (baseStrength == "wholeFace" ? ", s_b on every base face the slide touches" : "")
        << (rateWallFunction ? ", Eq. (1)'s wall function on the base" : "")
        << (faceViscosity ? ", the slide's viscosity at each face's rate" : "")
