@@ -256,11 +256,11 @@ int main(int argc, char** argv)
                       << "rigid block's law, slideDAM or slideMPM\n" << std::endl;
         }
 
-        if (!sc.base.isPlanar() && c.transposeShear == "nearKinks" && sc.slidesFreelyStrongerThan(0.25))
+        if (!sc.base.isPlanar() && c.transposeShear == "nearKinks" && sc.slidesFreelyStrongerThan(scene::Scene::facesStandRatio))
         {
-            // A block whose faces stand (4 s_uo > rho' g H0) slides as a plug, and a polyline's
-            // cells lie a few mm/s off its base: with a plug's viscosity the transpose flux's
-            // running mean pushed a 15 kPa block on a straight 5 deg polyline 80 Pa beyond s_b
+            // A block whose faces stand slides as a plug, and a polyline's cells lie a few mm/s
+            // off its base: with a plug's viscosity the transpose flux that nearKinks keeps
+            // pushed a 15 kPa block on a straight 5 deg polyline 80 Pa beyond s_b
             // (validation/cfd/README.md, session 91).
             std::cout << "Warning: " << cfdFile << ": key 'transposeShear': nearKinks on a polyline " << sc.interface.typeName()
                       << " base under a block whose faces stand (s_uo " << num(sc.rheology.s_uo) << " Pa against rho' g H0 "

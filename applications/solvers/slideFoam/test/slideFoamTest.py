@@ -1136,12 +1136,12 @@ def test_baseStrength(work):
         prepare(case)
         return case
 
-    brake = {}
+    brake, cases = {}, {}
     for name, base, cfd in (("planar", "planar", plug), ("polyline", "polyline", plug),
                             ("planar, wholeFace", "planar", dict(plug, baseStrength="wholeFace")),
                             # Only the base's half of conservePlugMomentum, the solver's plugCreepRate.
                             ("polyline, transposeShear runningMean", "polyline", {"transposeShear": "runningMean"})):
-        case = block_case(name, base, cfd)
+        case = cases[name] = block_case(name, base, cfd)
         U0 = open(os.path.join(case, "0.orig", "U")).read()
         check(("baseStrength    wholeFace;" in U0) == ("baseStrength" in cfd),
               "%s: 0/U's base says baseStrength wholeFace only where cfdDict asks it" % name)
@@ -1165,8 +1165,7 @@ def test_baseStrength(work):
     check(warned and "transposeShear  nearKinks;" in open(os.path.join(defaults, "0.orig", "U")).read(),
           "polyline with the solver's defaults: slideFoamCase warns of the transpose flux's push and 0/U says nearKinks")
     quiet = [n for n in ("planar", "polyline", name)
-             if "key 'transposeShear'" in open(os.path.join(work, "baseStrength_" + re.sub(r"\W+", "_", n),
-                                                           "log.slideFoamCase")).read()]
+             if "key 'transposeShear'" in open(os.path.join(cases[n], "log.slideFoamCase")).read()]
     check(not quiet, "no such warning on a planar base or with the running mean taken out (warned: %s)" % quiet)
     for name in ("planar", "polyline"):
         check(abs(brake[name]) < 8.0, "%s base, s_b on the slide's share of each face: the block's brake beyond "
