@@ -8,8 +8,9 @@ stretch and not an error in the base's law; what remains between them is the bas
 Made for backAnalysis.py's constant-s_b check of slideFoam on the Finneidfjord block (its run directory is the
 default), but any run of a block on a frictional base with runout.dat and constant/sceneProperties will do.
 
-Usage: validation/backAnalysis/contactBrake.py [--run DIR] [--method slideFoam] [--from 100]
-(seconds; writes contactBrake.md beside this script when run on the default directory)"""
+Usage: validation/backAnalysis/contactBrake.py [--run DIR] [--method slideFoam] [--from 100] [--to T]
+(seconds; --to leaves out the rows after T, where a stopped block rests on a static s_b that the law, which
+only brakes, does not hold; writes contactBrake.md beside this script when run on the default directory)"""
 import os
 import sys
 
@@ -33,7 +34,7 @@ def scene_value(scene, key):
 
 
 def main():
-    args = options.parse(__doc__, valued=("--run", "--method", "--from"))
+    args = options.parse(__doc__, valued=("--run", "--method", "--from", "--to"))
     run = os.path.abspath(args.get("--run") or DEFAULT_RUN)
     method = args.get("--method") or "slideFoam"
     start = float(args.get("--from") or 100)
@@ -53,6 +54,8 @@ def main():
     origin = float(scene_value(scene, "slide/rearPosition")) + float(scene_value(scene, "slide/length"))
     r = read_runout(path)
     keep = r["time"] >= start - 1e-9
+    if args.get("--to"):
+        keep &= r["time"] <= float(args["--to"]) + 1e-9
     if r["time"][0] > 0 or abs(r["front"][0]) > 1.0:
         raise SystemExit("%s: does not start at the release (time %g s, front %g m)" % (path, r["time"][0], r["front"][0]))
     if keep.sum() < 2:
