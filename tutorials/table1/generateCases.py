@@ -198,10 +198,11 @@ def readme(case, row, paper):
     if case == 8:
         lines.append("- A sensitive case. The block slides on s_b = 1.8 kPa, less than its drive (2.6 kPa at 5 m), "
                      "until its contact with the base is longer than its weight along the slope over s_b, 57 m; how "
-                     "fast it stretches decides the runout. slideFoam: 112.6 m at 100 s at H0/10, 127.0 m at H0/20, "
-                     "71-91 m with its plug-momentum options; slideMPM's block stays shorter than 57 m and slides on "
+                     "fast it stretches decides the runout. slideFoam (the base's s_b on the slide's share of each face): 145.1 m at 100 s at H0/10, "
+                     "128-133 m at H0/20, 136-178 m with its plug-momentum options (on the whole face 112.6, 127.0 and "
+                     "68-91 m); slideMPM's block stays shorter than 57 m and slides on "
                      "(557 m at 100 s); slideDAM 47 m. Without Eq. (1)'s rate effect (`eta 0;` in "
-                     "`constant/sceneProperties`) slideFoam stops it at 33.7 m and slideMPM at 33.9 m, the paper's "
+                     "`constant/sceneProperties`) slideFoam stops it at 34.6 m (32.8 m at H0/20) and slideMPM at 33.9 m, the paper's "
                      "30-35 m (`validation/cfd/frictionalBlock.md`).")
     if "spreading" in row["mechanism"] or "shear band" in row["mechanism"]:
         lines.append("- slideDAM runs this case but cannot show it: one velocity profile per column has no shear band, "
