@@ -1,0 +1,222 @@
+#!/usr/bin/env python3
+"""Why a plug that should slide rigid stretches in slideFoam: the Finneidfjord block's 2 m of 15 kPa clay (its
+scene: 500 kg/m3 submerged, no rate effect, no softening, a light ambient, the tutorial's mesh and plug set-up) cut to
+20 m and started at 4 m/s on a planar base at the angle where its weight along the slope equals s_b (83.2 Pa, the
+constant s_b slideDAM back-analyses for the tutorial), so that a rigid block would slide on at 4 m/s for ever.
+
+A block of s_u 15 kPa and 2 m cannot deform: its spreading stress rho' g H / 2 is 4.9 kPa. slideDAM and slideMPM
+keep it 20 m long. Every written second slideFoam's block is measured from its cells (each 0.5 m column's thickness
+is the sum of alpha times its cells' heights): its length (alpha 0.5 on the base, runout.dat), its body (the columns
+thicker than 0.6 H0), the tongue on the base ahead of the body and the tail behind it (length, area), the necks
+(the body's area short of H0 x its length), and its front: how far behind the foremost column the slide's full
+cells (alpha > 0.99) are yielding (their viscosity below a tenth of the cap, i.e. a strain rate over ten times
+plugCreepRate).
+
+Variants: default (the tutorial's set-up: s_b on the slide's share of each base face), wholeFace (s_b on every face
+whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default with the light ambient relaxed
+to rest in 0.5 s, cfdDict ambientRelaxationTime).
+
+Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax] [--end 100] [--work DIR]
+(after ./Allwmake; about 12 minutes a variant on one core, the variants one after the other; writes plugStretch.md
+and plugStretch.json beside this script)"""
+import argparse
+import json
+import math
+import os
+import re
+import sys
+import time
+
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+top = os.path.abspath(os.path.join(here, "..", ".."))
+sys.path.insert(0, os.path.join(top, "validation", "lib"))
+from cfdcase import get_entry, make_case, prepare, read_field, run, run_slidefoam, time_dirs  # noqa: E402
+from slidefoam_io import read_runout  # noqa: E402
+
+TEMPLATE = os.path.join(top, "tutorials", "finneidfjord")
+LENGTH, V0 = 20.0, 4.0
+VARIANTS = {
+    "default": "the tutorial's set-up: s_b on the slide's share of each base face",
+    "wholeFace": "s_b on every face whose cell holds slide (cfdDict baseStrength wholeFace)",
+    "ambientRelax": "the default, the light ambient relaxed to rest in 0.5 s (cfdDict ambientRelaxationTime 0.5)",
+}
+EXTRA = {"default": {}, "wholeFace": {"baseStrength": "wholeFace"}, "ambientRelax": {"ambientRelaxationTime": 0.5}}
+
+
+def tutorial_scene():
+    """height, density, s_uo, s_b of the Finneidfjord tutorial's block with slideDAM's constant s_b, and the
+    tutorial's cfdDict entries."""
+    path = os.path.join(TEMPLATE, "constant", "sceneProperties")
+    text = open(path).read()
+    slide = re.search(r"slide\s*\{([^}]*)\}", text).group(1)
+    rheology = re.search(r"rheology\s*\{([^}]*)\}", text).group(1)
+    values = {}
+    for key, block in (("height", slide), ("density", slide), ("s_uo", rheology)):
+        m = re.search(r"\b%s\s+([-\d.eE+]+)\s*;" % key, block)
+        if not m:
+            raise SystemExit("%s: no key '%s'" % (path, key))
+        values[key] = float(m.group(1))
+    # slideDAM's back-analysed constant s_b for the tutorial's runout (validation/backAnalysis).
+    path = os.path.join(top, "validation", "backAnalysis", "backAnalysis.json")
+    rows = [r for r in json.load(open(path)) if r.get("study") == "Finneidfjord block, constant s_b"]
+    if not rows or "slideDAM" not in rows[0]:
+        raise SystemExit("%s: no slideDAM row for the study 'Finneidfjord block, constant s_b'" % path)
+    values["s_b"] = float(rows[0]["slideDAM"]["result"]["best"]["value"])
+    cfd = {}
+    for line in open(os.path.join(TEMPLATE, "system", "cfdDict")):
+        m = re.match(r"^\s*(\w+)\s+([^;]+);", line)
+        if m and m.group(1) not in ("FoamFile", "version", "format", "class", "object"):
+            cfd[m.group(1)] = m.group(2).strip()
+    return values, cfd
+
+
+def block_case(variant, work, end):
+    sc, cfd = tutorial_scene()
+    angle = math.degrees(math.asin(sc["s_b"] / (sc["density"] * 9.81 * sc["height"])))
+    text = ("FoamFile { version 2.0; format ascii; class dictionary; object sceneProperties; }\n"
+            "title \"the Finneidfjord block at the angle where its weight matches s_b\";\ng 9.81;\n"
+            "slide { shape rectangle; length %g; height %g; rearPosition 0; density %g; }\n"
+            "rheology { model HerschelBulkleyRemoulding; s_uo %g; eta 0; deltaRem 1; }\n"
+            "base { profile planar; angle %.6f; interface frictional; s_b %.10g; }\nambient { phase light; }\n"
+            % (LENGTH, sc["height"], sc["density"], sc["s_uo"], angle, sc["s_b"]))
+    # Serial, on a mesh that reaches as far as the rigid block slides.
+    cfd = dict(cfd, processors=1, reach=int(V0 * end + 20), behind=10, **EXTRA[variant])
+    d = make_case(TEMPLATE, work, variant, control={"endTime": end, "writeInterval": 10}, cfd=cfd,
+                  dicts={"constant/sceneProperties": text})
+    prepare(d)
+    # The slide at V0 along the slope, the ambient at rest.
+    path = os.path.join(d, "0", "U")
+    alpha = np.clip(read_field(d, "0", "alpha.slide"), 0, 1)
+    body = "internalField   nonuniform List<vector>\n%d\n(\n%s\n)\n;" % (
+        len(alpha), "\n".join("(%.6g 0 0)" % (V0 * a) for a in alpha))
+    text = open(path).read()
+    new = re.sub(r"internalField\s+uniform\s*\([^)]*\)\s*;", body, text, count=1)
+    if new == text:
+        raise SystemExit("%s: no uniform internalField to replace" % path)
+    with open(path, "w") as f:
+        f.write(new)
+    t0 = time.time()
+    run_slidefoam(d)
+    with open(os.path.join(d, "wall.txt"), "w") as f:
+        f.write("%.0f\n" % (time.time() - t0))
+    return d
+
+
+def shape(d, H0):
+    """Per written time: the block's columns, measured from its cells."""
+    for func in ("writeCellVolumes", "writeCellCentres"):
+        run(d, "postProcess", "-func", func, "-time", "0", log="log.postProcess." + func)
+    V = read_field(d, "0", "V")
+    Cx, Cy = np.round(read_field(d, "0", "Cx"), 6), read_field(d, "0", "Cy")
+    xs = np.unique(Cx)
+    dx = float(np.median(np.diff(xs)))
+    column = np.searchsorted(xs, Cx)
+    base = np.abs(Cy - Cy.min()) < 1e-6
+    depth = V[base][0] / (dx * 2 * Cy.min())
+    muMax = float(get_entry(os.path.join(d, "constant", "transportProperties"), "muMax"))
+    # The slide phase is transportProperties' first.
+    rho = float(get_entry(os.path.join(d, "constant", "transportProperties"), "rho"))
+    r = read_runout(os.path.join(d, "postProcessing", "slideFoam", "runout.dat"))
+    rows = []
+    for t in time_dirs(d):
+        if not os.path.exists(os.path.join(d, t, "alpha.slide")):
+            continue
+        a = np.clip(read_field(d, t, "alpha.slide"), 0, 1)
+        h = np.bincount(column, weights=a * V, minlength=len(xs)) / (dx * depth)
+        live = np.where(h > 0.01)[0]
+        thick = np.where(h > 0.6 * H0)[0]
+        rear, front = thick[0], thick[-1]
+        ahead = live[live > front]
+        behind = live[live < rear]
+        k = int(np.argmin(np.abs(r["time"] - float(t))))
+        row = {"t": float(t), "length": float(r["front"][k] - r["rear"][k]), "speed": float(r["frontVelocity"][k]),
+               "body": float((front - rear + 1) * dx), "tongue": float(len(ahead) * dx),
+               "tongue_area": float(h[ahead].sum() * dx), "tail": float(len(behind) * dx),
+               "tail_area": float(h[behind].sum() * dx),
+               "neck_deficit": float(np.clip(H0 - h[rear:front + 1], 0, None).sum() * dx)}
+        if os.path.exists(os.path.join(d, t, "nu1")):
+            mu = rho * read_field(d, t, "nu1")
+            yielding = (a > 0.99) & (mu < 0.1 * muMax)
+            xf = xs[live[-1]] + 0.5 * dx
+            xr = xs[live[0]] - 0.5 * dx
+            mid = 0.5 * (xf + xr)
+            row["front_yield"] = float(xf - Cx[yielding & (Cx > mid)].min()) if (yielding & (Cx > mid)).any() else 0.0
+            row["rear_yield"] = float(Cx[yielding & (Cx < mid)].max() - xr) if (yielding & (Cx < mid)).any() else 0.0
+            row["full_cells"] = int((a > 0.99).sum())
+            row["yielding_cells"] = int(yielding.sum())
+        rows.append(row)
+    return rows
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--variants", default=",".join(VARIANTS))
+    ap.add_argument("--end", type=float, default=100.0)
+    ap.add_argument("--work", default=None, help="work directory (default: /tmp/slideFoam_plugStretch); a variant "
+                    "already run there to --end (its runout.dat reaching it) is read, not rerun")
+    args = ap.parse_args()
+    variants = args.variants.split(",")
+    for v in variants:
+        if v not in VARIANTS:
+            raise SystemExit("--variants: unknown variant '%s' (expected %s)" % (v, ", ".join(VARIANTS)))
+    work = args.work or os.path.join("/tmp", "slideFoam_plugStretch")
+    os.makedirs(work, exist_ok=True)
+    H0 = tutorial_scene()[0]["height"]
+    results = {}
+    for v in variants:
+        d = os.path.join(work, v)
+        runout = os.path.join(d, "postProcessing", "slideFoam", "runout.dat")
+        done = os.path.exists(runout) and read_runout(runout)["time"][-1] >= args.end - 1e-6
+        if not done:
+            print("%s: running slideFoam to %g s (serial)" % (v, args.end), flush=True)
+            d = block_case(v, work, args.end)
+        wall = os.path.join(d, "wall.txt")
+        results[v] = {"rows": shape(d, H0), "wall": float(open(wall).read()) if os.path.exists(wall) else None}
+        last = results[v]["rows"][-1]
+        print("%-12s at %g s: length %.2f m, body %.1f m, tongue %.1f m (%.2f m2), neck deficit %.2f m2"
+              % (v, last["t"], last["length"], last["body"], last["tongue"], last["tongue_area"],
+                 last["neck_deficit"]), flush=True)
+    write_report(results, args)
+
+
+def write_report(results, args):
+    sc = tutorial_scene()[0]
+    lines = ["# A plug that should slide rigid: slideFoam's stretch of the Finneidfjord block",
+             "",
+             "Written by `validation/cfd/plugStretch.py --end %g`. The tutorial's block (H0 %g m, s_uo %g Pa, "
+             "%g kg/m3, no rate effect, the tutorial's mesh H0/4 and plug set-up) cut to %g m, started at %g m/s "
+             "on a planar base at the angle where its weight along the slope equals s_b = %.2f Pa: a rigid block "
+             "slides on at %g m/s. Its spreading stress rho' g H0/2 = %.1f kPa is a third of s_u, so it cannot "
+             "deform. Body: the columns thicker than 0.6 H0; tongue and tail: the slide on the base ahead of and "
+             "behind it; necks: the body's area short of H0 over its length; yielding: full cells (alpha > 0.99) "
+             "whose viscosity is below a tenth of the cap, how far they reach from the block's ends."
+             % (args.end, sc["height"], sc["s_uo"], sc["density"], LENGTH, V0, sc["s_b"], V0,
+                sc["density"] * 9.81 * sc["height"] / 2 / 1000),
+             "",
+             "| variant | wall [s] |",
+             "|---|---|"]
+    for v, r in results.items():
+        lines.append("| %s: %s | %s |" % (v, VARIANTS[v], "%.0f" % r["wall"] if r["wall"] else "-"))
+    lines += ["", "| variant | t [s] | speed [m/s] | length [m] | body [m] | tongue [m], [m2] | tail [m], [m2] "
+              "| neck deficit [m2] | yielding from the front, rear [m] | yielding cells of full |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for v, r in results.items():
+        for x in r["rows"]:
+            if x["t"] == 0 or (x["t"] % 20 and x["t"] != r["rows"][-1]["t"]):
+                continue
+            y = ("%.1f, %.1f" % (x["front_yield"], x["rear_yield"])) if "front_yield" in x else "-"
+            c = ("%d of %d" % (x["yielding_cells"], x["full_cells"])) if "full_cells" in x else "-"
+            lines.append("| %s | %g | %.3f | %.2f | %.1f | %.1f, %.2f | %.1f, %.2f | %.2f | %s | %s |"
+                         % (v, x["t"], x["speed"], x["length"], x["body"], x["tongue"], x["tongue_area"],
+                            x["tail"], x["tail_area"], x["neck_deficit"], y, c))
+    with open(os.path.join(here, "plugStretch.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    with open(os.path.join(here, "plugStretch.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    print("wrote %s" % os.path.join(here, "plugStretch.md"))
+
+
+if __name__ == "__main__":
+    main()
