@@ -26,7 +26,8 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import get_entry, make_case, prepare, read_field, run, run_slidefoam, set_method_entries, time_dirs  # noqa: E402
+from cfdcase import (get_entry, make_case, prepare, read_field, run, run_slidefoam,  # noqa: E402
+                     set_method_entries, time_dirs, variant_arguments)
 from runner import which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
 
@@ -120,19 +121,11 @@ def budget(d, theta, s_b, rho):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--variants", default=",".join(VARIANTS))
     ap.add_argument("--cells", type=int, default=10)
     ap.add_argument("--base-refinement", type=int, default=4)
     ap.add_argument("--processors", type=int, default=2)
-    ap.add_argument("--work", default=None, help="work directory (default: /tmp/slideFoam_frictionalBlock); "
-                    "a variant already run there on the same mesh (its summary.json present) is read, not rerun")
-    args = ap.parse_args()
-    variants = args.variants.split(",")
-    for v in variants:
-        if v not in VARIANTS:
-            raise SystemExit("--variants: unknown variant '%s' (expected %s)" % (v, ", ".join(VARIANTS)))
-    work = args.work or os.path.join("/tmp", "slideFoam_frictionalBlock")
-    os.makedirs(work, exist_ok=True)
+    args, variants, work = variant_arguments(ap, VARIANTS, "frictionalBlock", "a variant already run there on the "
+                                             "same mesh (its summary.json present) is read, not rerun")
     theta, s_b, rho = scene()
     results = {}
     for v in variants:

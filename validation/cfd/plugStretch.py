@@ -14,9 +14,10 @@ plugCreepRate).
 
 Variants: default (the tutorial's set-up: s_b on the slide's share of each base face), wholeFace (s_b on every face
 whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default with the light ambient relaxed
-to rest in 0.5 s, cfdDict ambientRelaxationTime).
+to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's viscosity at each face's own rate),
+stifferCap (a third of the tutorial's plugCreepRate).
 
-Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax] [--end 100] [--work DIR]
+Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap] [--end 100] [--work DIR]
 (after ./Allwmake; about 12 minutes a variant on one core, the variants one after the other; writes plugStretch.md
 and plugStretch.json beside this script)"""
 import argparse
@@ -32,7 +33,8 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import get_entry, make_case, prepare, read_field, run, run_slidefoam, time_dirs  # noqa: E402
+from cfdcase import (get_entry, make_case, prepare, read_field, run, run_slidefoam, time_dirs,  # noqa: E402
+                     variant_arguments)
 from slidefoam_io import read_runout  # noqa: E402
 
 TEMPLATE = os.path.join(top, "tutorials", "finneidfjord")
@@ -41,8 +43,11 @@ VARIANTS = {
     "default": "the tutorial's set-up: s_b on the slide's share of each base face",
     "wholeFace": "s_b on every face whose cell holds slide (cfdDict baseStrength wholeFace)",
     "ambientRelax": "the default, the light ambient relaxed to rest in 0.5 s (cfdDict ambientRelaxationTime 0.5)",
+    "faceViscosity": "the default, the slide's viscosity at each face's own strain rate (cfdDict faceViscosity yes)",
+    "stifferCap": "the default at a third of the tutorial's plugCreepRate, a cap three times as high",
 }
-EXTRA = {"default": {}, "wholeFace": {"baseStrength": "wholeFace"}, "ambientRelax": {"ambientRelaxationTime": 0.5}}
+EXTRA = {"default": {}, "wholeFace": {"baseStrength": "wholeFace"}, "ambientRelax": {"ambientRelaxationTime": 0.5},
+         "faceViscosity": {"faceViscosity": "yes"}, "stifferCap": {"plugCreepRate": "2.461e-4"}}
 
 
 def tutorial_scene():
@@ -152,17 +157,9 @@ def shape(d, H0):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--variants", default=",".join(VARIANTS))
     ap.add_argument("--end", type=float, default=100.0)
-    ap.add_argument("--work", default=None, help="work directory (default: /tmp/slideFoam_plugStretch); a variant "
-                    "already run there to --end (its runout.dat reaching it) is read, not rerun")
-    args = ap.parse_args()
-    variants = args.variants.split(",")
-    for v in variants:
-        if v not in VARIANTS:
-            raise SystemExit("--variants: unknown variant '%s' (expected %s)" % (v, ", ".join(VARIANTS)))
-    work = args.work or os.path.join("/tmp", "slideFoam_plugStretch")
-    os.makedirs(work, exist_ok=True)
+    args, variants, work = variant_arguments(ap, VARIANTS, "plugStretch", "a variant already run there to --end "
+                                             "(its runout.dat reaching it) is read, not rerun")
     H0 = tutorial_scene()[0]["height"]
     results = {}
     for v in variants:

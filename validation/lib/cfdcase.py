@@ -182,6 +182,22 @@ def run_regenerating(case, processors=1, retries=2):
             subprocess.run(["bash", "-c", "rm -rf processor*"], cwd=case, check=True)
 
 
+def variant_arguments(ap, variants, name, reuse):
+    """Parses a variant study's command line: ap's own arguments, --variants (a comma list of the keys of
+    `variants`, all by default) and --work (default /tmp/slideFoam_<name>, made if missing; `reuse` says which
+    runs found there are read, not rerun). Returns (args, the variants chosen, the work directory)."""
+    ap.add_argument("--variants", default=",".join(variants))
+    ap.add_argument("--work", default=None, help="work directory (default: /tmp/slideFoam_%s); %s" % (name, reuse))
+    args = ap.parse_args()
+    chosen = args.variants.split(",")
+    for v in chosen:
+        if v not in variants:
+            raise SystemExit("--variants: unknown variant '%s' (expected %s)" % (v, ", ".join(variants)))
+    work = args.work or os.path.join("/tmp", "slideFoam_" + name)
+    os.makedirs(work, exist_ok=True)
+    return args, chosen, work
+
+
 def time_dirs(case):
     out = []
     for n in os.listdir(case):
