@@ -5,7 +5,7 @@ scene: 500 kg/m3 submerged, no rate effect, no softening, a light ambient, the t
 constant s_b slideDAM back-analyses for the tutorial), so that a rigid block would slide on at 4 m/s for ever.
 
 A block of s_u 15 kPa and 2 m cannot deform: its spreading stress rho' g H / 2 is 4.9 kPa. slideDAM and slideMPM
-keep it 20 m long. Every written second slideFoam's block is measured from its cells (each 0.5 m column's thickness
+keep it 20 m long. At each written time (every 10 s) slideFoam's block is measured from its cells (each 0.5 m column's thickness
 is the sum of alpha times its cells' heights): its length (alpha 0.5 on the base, runout.dat), its body (the columns
 thicker than 0.6 H0), the tongue on the base ahead of the body and the tail behind it (length, area), the necks
 (the body's area short of H0 x its length), and its front: how far behind the foremost column the slide's full
@@ -18,7 +18,7 @@ to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's vis
 stifferCap (a third of the tutorial's plugCreepRate).
 
 Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap] [--end 100] [--work DIR]
-(after ./Allwmake; about 12 minutes a variant on one core, the variants one after the other; writes plugStretch.md
+(after ./Allwmake; 8-15 minutes a variant on one core, the variants one after the other; writes plugStretch.md
 and plugStretch.json beside this script)"""
 import argparse
 import json
