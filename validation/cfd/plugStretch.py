@@ -4,9 +4,10 @@ scene: 500 kg/m3 submerged, no rate effect, no softening, a light ambient, the t
 20 m and started at 4 m/s on a planar base at the angle where its weight along the slope equals s_b (83.2 Pa, the
 constant s_b slideDAM back-analyses for the tutorial), so that a rigid block would slide on at 4 m/s for ever.
 
-A block of s_u 15 kPa and 2 m cannot deform: its spreading stress rho' g H / 2 is 4.9 kPa. slideDAM and slideMPM
-keep it 20 m long. At each written time (every 10 s) slideFoam's block is measured from its cells (each 0.5 m column's thickness
-is the sum of alpha times its cells' heights): its length (alpha 0.5 on the base, runout.dat), its body (the columns
+A block of s_u 15 kPa and 2 m cannot deform: its spreading stress rho' g H / 2 is 4.9 kPa (slideDAM and slideMPM
+keep the tutorial's 60 m block 60 m long: tutorials/finneidfjord/README.md). At each written time (every 10 s)
+slideFoam's block is measured from its cells (each 0.5 m column's thickness is the sum of alpha times its cells'
+heights): its length (alpha 0.5 on the base, runout.dat), its body (the columns
 thicker than 0.6 H0), the tongue on the base ahead of the body and the tail behind it (length, area), the necks
 (the body's area short of H0 x its length), and its front: how far behind the foremost column the slide's full
 cells (alpha > 0.99) are yielding (their viscosity below a tenth of the cap, i.e. a strain rate over ten times
