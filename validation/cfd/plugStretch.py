@@ -18,9 +18,10 @@ whose cell holds slide, slideFoam's base until session 90), ambientRelax (the de
 to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's viscosity at each face's own rate),
 stifferCap (a third of the tutorial's plugCreepRate).
 
-Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap] [--end 100] [--work DIR]
+Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap] [--end 100]
+                                      [--cells N] [--work DIR]
 (after ./Allwmake; 8-15 minutes a variant on one core, the variants one after the other; writes plugStretch.md
-and plugStretch.json beside this script)"""
+and plugStretch.json beside this script, plugStretch_H0_<N>.md/.json with --cells N)"""
 import argparse
 import json
 import math
@@ -78,7 +79,12 @@ def tutorial_scene():
     return values, cfd
 
 
-def block_case(variant, work, end):
+def case_name(variant, cells):
+    """A run's directory: the variant's name, with its mesh where that is not the tutorial's."""
+    return variant if cells is None else "%s_H0_%d" % (variant, cells)
+
+
+def block_case(variant, work, end, cells):
     sc, cfd = tutorial_scene()
     angle = math.degrees(math.asin(sc["s_b"] / (sc["density"] * 9.81 * sc["height"])))
     text = ("FoamFile { version 2.0; format ascii; class dictionary; object sceneProperties; }\n"
@@ -89,7 +95,9 @@ def block_case(variant, work, end):
             % (LENGTH, sc["height"], sc["density"], sc["s_uo"], angle, sc["s_b"]))
     # Serial, on a mesh that reaches as far as the rigid block slides.
     cfd = dict(cfd, processors=1, reach=int(V0 * end + 20), behind=10, **EXTRA[variant])
-    d = make_case(TEMPLATE, work, variant, control={"endTime": end, "writeInterval": 10}, cfd=cfd,
+    if cells is not None:
+        cfd["cellsPerHeight"] = cells
+    d = make_case(TEMPLATE, work, case_name(variant, cells), control={"endTime": end, "writeInterval": 10}, cfd=cfd,
                   dicts={"constant/sceneProperties": text})
     prepare(d)
     # The slide at V0 along the slope, the ambient at rest.
@@ -159,17 +167,18 @@ def shape(d, H0):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--end", type=float, default=100.0)
+    ap.add_argument("--cells", type=int, default=None, help="cells per H0 (default: the tutorial's cfdDict)")
     args, variants, work = variant_arguments(ap, VARIANTS, "plugStretch", "a variant already run there to --end "
                                              "(its runout.dat reaching it) is read, not rerun")
     H0 = tutorial_scene()[0]["height"]
     results = {}
     for v in variants:
-        d = os.path.join(work, v)
+        d = os.path.join(work, case_name(v, args.cells))
         runout = os.path.join(d, "postProcessing", "slideFoam", "runout.dat")
         done = os.path.exists(runout) and read_runout(runout)["time"][-1] >= args.end - 1e-6
         if not done:
             print("%s: running slideFoam to %g s (serial)" % (v, args.end), flush=True)
-            d = block_case(v, work, args.end)
+            d = block_case(v, work, args.end, args.cells)
         wall = os.path.join(d, "wall.txt")
         results[v] = {"rows": shape(d, H0), "wall": float(open(wall).read()) if os.path.exists(wall) else None}
         last = results[v]["rows"][-1]
@@ -180,17 +189,20 @@ def main():
 
 
 def write_report(results, args):
-    sc = tutorial_scene()[0]
+    sc, cfd = tutorial_scene()
+    mesh = ("its mesh H0/%s" % cfd["cellsPerHeight"]) if args.cells is None else ("a mesh of H0/%d" % args.cells)
+    name = "plugStretch" + ("" if args.cells is None else "_H0_%d" % args.cells)
     lines = ["# A plug that should slide rigid: slideFoam's stretch of the Finneidfjord block",
              "",
-             "Written by `validation/cfd/plugStretch.py --end %g`. The tutorial's block (H0 %g m, s_uo %g Pa, "
-             "%g kg/m3, no rate effect, the tutorial's mesh H0/4 and plug set-up) cut to %g m, started at %g m/s "
+             "Written by `validation/cfd/plugStretch.py --end %g%s`. The tutorial's block (H0 %g m, s_uo %g Pa, "
+             "%g kg/m3, no rate effect, the tutorial's plug set-up, %s) cut to %g m, started at %g m/s "
              "on a planar base at the angle where its weight along the slope equals s_b = %.2f Pa: a rigid block "
              "slides on at %g m/s. Its spreading stress rho' g H0/2 = %.1f kPa is a third of s_u, so it cannot "
              "deform. Body: the columns thicker than 0.6 H0; tongue and tail: the slide on the base ahead of and "
              "behind it; necks: the body's area short of H0 over its length; yielding: full cells (alpha > 0.99) "
              "whose viscosity is below a tenth of the cap, how far they reach from the block's ends."
-             % (args.end, sc["height"], sc["s_uo"], sc["density"], LENGTH, V0, sc["s_b"], V0,
+             % (args.end, "" if args.cells is None else " --cells %d" % args.cells,
+                sc["height"], sc["s_uo"], sc["density"], mesh, LENGTH, V0, sc["s_b"], V0,
                 sc["density"] * 9.81 * sc["height"] / 2 / 1000),
              "",
              "| variant | wall [s] |",
@@ -209,11 +221,11 @@ def write_report(results, args):
             lines.append("| %s | %g | %.3f | %.2f | %.1f | %.1f, %.2f | %.1f, %.2f | %.2f | %s | %s |"
                          % (v, x["t"], x["speed"], x["length"], x["body"], x["tongue"], x["tongue_area"],
                             x["tail"], x["tail_area"], x["neck_deficit"], y, c))
-    with open(os.path.join(here, "plugStretch.md"), "w") as f:
+    with open(os.path.join(here, name + ".md"), "w") as f:
         f.write("\n".join(lines) + "\n")
-    with open(os.path.join(here, "plugStretch.json"), "w") as f:
+    with open(os.path.join(here, name + ".json"), "w") as f:
         json.dump(results, f, indent=1)
-    print("wrote %s" % os.path.join(here, "plugStretch.md"))
+    print("wrote %s" % os.path.join(here, name + ".md"))
 
 
 if __name__ == "__main__":
