@@ -16,7 +16,6 @@ Usage: validation/cfd/frictionalBlock.py [--variants default,restore,transpose,b
 (after ./Allwmake; about 2 min a variant on 2 cores at H0/10, 16 min at H0/20; writes frictionalBlock.md beside this
 script at Table 1's mesh, H0/10 with H0/40 on the base, else frictionalBlock_H0_<cells>.md)"""
 import argparse
-import json
 import math
 import os
 import sys
@@ -27,7 +26,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import (get_entry, make_case, prepare, read_field, run, run_slidefoam,  # noqa: E402
-                     set_method_entries, time_dirs, variant_arguments)
+                     set_method_entries, time_dirs, variant_arguments, write_study)
 from runner import which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
 
@@ -185,11 +184,7 @@ def write_report(results, s_b, args):
         lines.append("| %g | " % t + " | ".join(cells) + " |")
     # Table 1's mesh writes frictionalBlock.md, another mesh frictionalBlock_H0_<cells>.md.
     name = "frictionalBlock" + ("" if (args.cells, args.base_refinement) == (10, 4) else "_H0_%d" % args.cells)
-    with open(os.path.join(here, name + ".md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    with open(os.path.join(here, name + ".json"), "w") as f:
-        json.dump(results, f, indent=1)
-    print("wrote %s" % os.path.join(here, name + ".md"))
+    write_study(here, name, lines, results)
 
 
 if __name__ == "__main__":

@@ -36,7 +36,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
 from cfdcase import (get_entry, make_case, prepare, read_field, run, run_slidefoam, time_dirs,  # noqa: E402
-                     variant_arguments)
+                     variant_arguments, write_study)
 from slidefoam_io import read_runout  # noqa: E402
 
 TEMPLATE = os.path.join(top, "tutorials", "finneidfjord")
@@ -221,11 +221,7 @@ def write_report(results, args):
             lines.append("| %s | %g | %.3f | %.2f | %.1f | %.1f, %.2f | %.1f, %.2f | %.2f | %s | %s |"
                          % (v, x["t"], x["speed"], x["length"], x["body"], x["tongue"], x["tongue_area"],
                             x["tail"], x["tail_area"], x["neck_deficit"], y, c))
-    with open(os.path.join(here, name + ".md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    with open(os.path.join(here, name + ".json"), "w") as f:
-        json.dump(results, f, indent=1)
-    print("wrote %s" % os.path.join(here, name + ".md"))
+    write_study(here, name, lines, results)
 
 
 if __name__ == "__main__":

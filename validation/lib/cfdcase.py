@@ -2,6 +2,7 @@
 copy a scene case, edit its scene and run control, generate the CFD case
 (slideFoamCase, blockMesh), run slideFoam serially or with MPI, and
 read OpenFOAM ASCII fields back."""
+import json
 import os
 import re
 import shutil
@@ -196,6 +197,15 @@ def variant_arguments(ap, variants, name, reuse):
     work = args.work or os.path.join("/tmp", "slideFoam_" + name)
     os.makedirs(work, exist_ok=True)
     return args, chosen, work
+
+
+def write_study(directory, name, lines, results):
+    """A study's report: <name>.md from its lines and <name>.json from its results, in `directory`."""
+    with open(os.path.join(directory, name + ".md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    with open(os.path.join(directory, name + ".json"), "w") as f:
+        json.dump(results, f, indent=1)
+    print("wrote %s" % os.path.join(directory, name + ".md"))
 
 
 def time_dirs(case):
