@@ -25,7 +25,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import (get_entry, make_case, prepare, read_field, run, run_slidefoam,  # noqa: E402
+from cfdcase import (cell_geometry, get_entry, make_case, prepare, read_field, run, run_slidefoam,  # noqa: E402
                      set_method_entries, time_dirs, variant_arguments, write_study)
 from runner import which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
@@ -86,10 +86,7 @@ def run_variant(variant, work, cells, refinement, processors):
 def budget(d, theta, s_b, rho):
     """The slide's area and weight along the slope, the contact that stalls it, and per written whole second its
     momentum P, dP/dt (backward), contact length [m] and the base force [N/m] and stress [Pa] the budget implies."""
-    for func in ("writeCellVolumes", "writeCellCentres"):
-        run(d, "postProcess", "-func", func, "-time", "0", log="log.postProcess." + func)
-    V = read_field(d, "0", "V")
-    Cx, Cy = read_field(d, "0", "Cx"), read_field(d, "0", "Cy")
+    V, Cx, Cy = cell_geometry(d)
     base = np.abs(Cy - Cy.min()) < 1e-6 * max(1.0, abs(Cy.min()))
     order = np.argsort(Cx[base])
     width = np.gradient(Cx[base][order])

@@ -35,7 +35,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import (get_entry, make_case, prepare, read_field, run, run_slidefoam, time_dirs,  # noqa: E402
+from cfdcase import (cell_geometry, get_entry, make_case, prepare, read_field, run_slidefoam, time_dirs,  # noqa: E402
                      variant_arguments, write_study)
 from slidefoam_io import read_runout  # noqa: E402
 
@@ -120,10 +120,8 @@ def block_case(variant, work, end, cells):
 
 def shape(d, H0):
     """Per written time: the block's columns, measured from its cells."""
-    for func in ("writeCellVolumes", "writeCellCentres"):
-        run(d, "postProcess", "-func", func, "-time", "0", log="log.postProcess." + func)
-    V = read_field(d, "0", "V")
-    Cx, Cy = np.round(read_field(d, "0", "Cx"), 6), read_field(d, "0", "Cy")
+    V, Cx, Cy = cell_geometry(d)
+    Cx = np.round(Cx, 6)
     xs = np.unique(Cx)
     dx = float(np.median(np.diff(xs)))
     column = np.searchsorted(xs, Cx)

@@ -183,6 +183,14 @@ def run_regenerating(case, processors=1, retries=2):
             subprocess.run(["bash", "-c", "rm -rf processor*"], cwd=case, check=True)
 
 
+def cell_geometry(case, time="0"):
+    """The cells' volumes and centres (V, Cx, Cy) of a serial or reconstructed case at `time`, written by
+    postProcess (writeCellVolumes, writeCellCentres)."""
+    for func in ("writeCellVolumes", "writeCellCentres"):
+        run(case, "postProcess", "-func", func, "-time", time, log="log.postProcess." + func)
+    return read_field(case, time, "V"), read_field(case, time, "Cx"), read_field(case, time, "Cy")
+
+
 def variant_arguments(ap, variants, name, reuse):
     """Parses a variant study's command line: ap's own arguments, --variants (a comma list of the keys of
     `variants`, all by default) and --work (default /tmp/slideFoam_<name>, made if missing; `reuse` says which
