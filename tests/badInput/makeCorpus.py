@@ -341,6 +341,9 @@ scene_sub("site-position-word", "a site's position that is not a number",
           r"^\s*gauge5m\s", "    gauge5m     { position five; }", "sites.gauge5m.position")
 scene_sub("site-unknown-key", "a site with a key no method reads (depth)",
           r"^\s*gauge5m\s", "    gauge5m     { position 5; depth 1; }", "sites.gauge5m.depth")
+add("cfd-slide-trace-one", "base faces under less than all of the slide counted as the ambient's (baseSlideTrace 1: "
+    "the alpha below which a face is stuck must lie in [0, 1))", "system/cfdDict",
+    cfd0[:-1] + ["baseSlideTrace  1;", ""], len(cfd0), "baseSlideTrace", "slideFoamCase")
 
 
 def main():

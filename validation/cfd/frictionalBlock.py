@@ -3,7 +3,8 @@
 5 deg): the slide's downslope momentum budget from its written fields, for the default solver and for the two
 halves of cfdDict conservePlugMomentum (PIMPLE restoreCorrectorMomentum; the base's transposeShear runningMean)
 alone and together, for the scene without Eq. (1)'s rate effect, and for the base that exerts all of s_b on every
-face whose cell holds slide (cfdDict baseStrength wholeFace, slideFoam's only base until session 90).
+face whose cell holds slide (cfdDict baseStrength wholeFace, slideFoam's only base until session 90), and for base
+faces under traces of slide held as the ambient's (cfdDict baseSlideTrace 1e-4).
 
 Each second of the run: the slide's momentum P = sum(rho alpha U_x V) per metre of width, dP/dt, the length of
 base under slide (faces whose moving cell holds alpha > 0.01) and the slide's share of it (sum of alpha times the
@@ -11,7 +12,7 @@ face's length: the base exerts s_b on that share by default), and the base force
 the slope less dP/dt, over that share. A block sliding on such a base is stopped by its own length: it decelerates
 once s_b times its contact passes its weight along the slope (here at 57 m).
 
-Usage: validation/cfd/frictionalBlock.py [--variants default,restore,transpose,both,rateFree,wholeFace] [--cells 10]
+Usage: validation/cfd/frictionalBlock.py [--variants default,restore,transpose,both,rateFree,wholeFace,slideTrace] [--cells 10]
                                           [--base-refinement 4] [--processors 2] [--work DIR]
 (after ./Allwmake; about 2 min a variant on 2 cores at H0/10, 16 min at H0/20; writes frictionalBlock.md beside this
 script at Table 1's mesh, H0/10 with H0/40 on the base, else frictionalBlock_H0_<cells>.md)"""
@@ -38,6 +39,8 @@ VARIANTS = {
     "both": "cfdDict conservePlugMomentum yes (both)",
     "rateFree": "the solver's defaults, the scene without Eq. (1)'s rate effect (eta 0)",
     "wholeFace": "the solver's defaults, s_b on every face the slide touches (cfdDict baseStrength wholeFace)",
+    "slideTrace": "the solver's defaults, base faces under less than 1e-4 of slide the ambient's (cfdDict "
+                  "baseSlideTrace 1e-4)",
 }
 # Written every second; these rows go into the table.
 REPORT_TIMES = [2, 5, 10, 15, 20, 25, 30, 40, 50]
@@ -74,6 +77,8 @@ def run_variant(variant, work, cells, refinement, processors):
         cfd["transposeShear"] = "runningMean"
     if variant == "wholeFace":
         cfd["baseStrength"] = "wholeFace"
+    if variant == "slideTrace":
+        cfd["baseSlideTrace"] = "1e-4"
     set_method_entries(d, "cfdDict", cfd)
     run(d, which("slideDAM"), "-case", ".")
     prepare(d)

@@ -16,9 +16,10 @@ plugCreepRate).
 Variants: default (the tutorial's set-up: s_b on the slide's share of each base face), wholeFace (s_b on every face
 whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default with the light ambient relaxed
 to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's viscosity at each face's own rate),
-stifferCap (a third of the tutorial's plugCreepRate).
+stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces under less than 1e-4 of slide stuck as
+the ambient's: the traces of plug around the block otherwise leave the base there frictionless).
 
-Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap] [--end 100]
+Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace] [--end 100]
                                       [--cells N] [--work DIR]
 (after ./Allwmake; 8-15 minutes a variant on one core, the variants one after the other; writes plugStretch.md
 and plugStretch.json beside this script, plugStretch_H0_<N>.md/.json with --cells N)"""
@@ -47,9 +48,11 @@ VARIANTS = {
     "ambientRelax": "the default, the light ambient relaxed to rest in 0.5 s (cfdDict ambientRelaxationTime 0.5)",
     "faceViscosity": "the default, the slide's viscosity at each face's own strain rate (cfdDict faceViscosity yes)",
     "stifferCap": "the default at a third of the tutorial's plugCreepRate, a cap three times as high",
+    "slideTrace": "the default, base faces whose cell holds under 1e-4 of slide the ambient's (cfdDict baseSlideTrace 1e-4)",
 }
 EXTRA = {"default": {}, "wholeFace": {"baseStrength": "wholeFace"}, "ambientRelax": {"ambientRelaxationTime": 0.5},
-         "faceViscosity": {"faceViscosity": "yes"}, "stifferCap": {"plugCreepRate": "2.461e-4"}}
+         "faceViscosity": {"faceViscosity": "yes"}, "stifferCap": {"plugCreepRate": "2.461e-4"},
+         "slideTrace": {"baseSlideTrace": "1e-4"}}
 
 
 def tutorial_scene():

@@ -226,21 +226,52 @@ def time_dirs(case):
     return [n for _, n in sorted(out)]
 
 
+def _nonuniform_list(kind, n, body):
+    """The n values of an ASCII nonuniform List<kind> whose opening parenthesis ends just before body."""
+    if kind == "vector":
+        # A list of up to ten is written on one line: "4((x y z) ... );"
+        end = body.index("\n)") if "\n)" in body[:body.index(";")] else body.index(");")
+        vals = re.findall(r"\(([^()]*)\)", body[:end])
+        return np.array([[float(x) for x in v.split()] for v in vals[:n]])
+    return np.array([float(x) for x in body[:body.index(")")].split()[:n]])
+
+
 def read_field(case, time, name):
     """internalField of an ASCII volScalarField/volVectorField as a numpy array."""
     text = open(os.path.join(case, time, name)).read()
     m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
     if m:
-        n = int(m.group(2))
-        body = text[m.end():]
-        if m.group(1) == "vector":
-            # A list of up to ten is written on one line: "4((x y z) ... );"
-            end = body.index("\n)") if "\n)" in body[:body.index(";")] else body.index(");")
-            vals = re.findall(r"\(([^()]*)\)", body[:end])
-            return np.array([[float(x) for x in v.split()] for v in vals[:n]])
-        return np.array([float(x) for x in body[:body.index(")")].split()[:n]])
+        return _nonuniform_list(m.group(1), int(m.group(2)), text[m.end():])
     m = re.search(r"internalField\s+uniform\s+(\([^)]*\)|[^;]+);", text)
     if not m:
         raise ValueError("no internalField in %s/%s/%s" % (case, time, name))
     v = m.group(1).strip()
     return np.array([float(x) for x in v.strip("()").split()])
+
+
+def read_patch(case, time, name, patch):
+    """The value entry of one patch of an ASCII field (nonuniform only), as a numpy array."""
+    path = os.path.join(case, time, name)
+    text = open(path).read()
+    start = re.search(r"\n\s*%s\s*\{" % re.escape(patch), text[text.index("boundaryField"):])
+    if not start:
+        raise ValueError("%s: no patch %s" % (path, patch))
+    text = text[text.index("boundaryField") + start.end():]
+    m = re.search(r"value\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text[:text.index("}")])
+    if not m:
+        raise ValueError("%s: patch %s has no nonuniform value" % (path, patch))
+    return _nonuniform_list(m.group(1), int(m.group(2)), text[m.end():])
+
+
+def patch_cells(case, patch):
+    """The cell next to each face of a patch of the case's (serial, ASCII) mesh, in the patch's face order."""
+    mesh = os.path.join(case, "constant", "polyMesh")
+    b = re.search(r"\n\s*%s\s*\{[^}]*nFaces\s+(\d+);[^}]*startFace\s+(\d+);" % re.escape(patch),
+                  open(os.path.join(mesh, "boundary")).read())
+    if not b:
+        raise ValueError("%s/boundary: no patch %s" % (mesh, patch))
+    text = open(os.path.join(mesh, "owner")).read()
+    m = re.search(r"\n(\d+)\s*\(", text[text.index("}"):])
+    owner = np.array(text[text.index("}") + m.end():].split(")")[0].split(), dtype=int)
+    start, n = int(b.group(2)), int(b.group(1))
+    return owner[start:start + n]

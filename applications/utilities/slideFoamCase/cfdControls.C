@@ -11,7 +11,7 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
 {
     d.checkKnownKeys({"FoamFile", "setting", "cellsPerHeight", "reach", "reachFactor", "behind", "heightRatio",
                       "aheadHeightRatio", "aheadHeightFrom", "top", "ambientRelaxationTime", "baseRefinement", "baseGrowth", "regularisation",
-                      "pressureCoupling", "outerCorrectors", "alongSlopeGravity", "conservePlugMomentum", "transposeShear", "baseStrength", "shearBandThickness", "rateWallFunction", "faceViscosity",
+                      "pressureCoupling", "outerCorrectors", "alongSlopeGravity", "conservePlugMomentum", "transposeShear", "baseStrength", "baseSlideTrace", "shearBandThickness", "rateWallFunction", "faceViscosity",
                       "plugCreepRate", "momentumTolerance", "processors", "endTime"});
     CfdControls c;
     c.setting = scene::readSetting(d, overrideSetting, {"reference", "fast"}, "fast");
@@ -93,6 +93,11 @@ CfdControls CfdControls::read(const scene::Dictionary& d, const std::string& ove
     c.transposeShear = d.found("transposeShear") ? d.getWordOneOf("transposeShear", {"nearKinks", "runningMean"})
                      : c.conservePlugMomentum ? "runningMean" : "nearKinks";
     if (d.found("baseStrength")) c.baseStrength = d.getWordOneOf("baseStrength", {"slideShare", "wholeFace"});
+    if (d.found("baseSlideTrace"))
+    {
+        c.baseSlideTrace = d.getScalarInRange("baseSlideTrace", 0.0, 1.0, true, false,
+                                              "slide trace (the alpha below which a base face is the ambient's)");
+    }
     c.rateWallFunction = d.getBool("rateWallFunction", false);
     if (c.rateWallFunction && c.regularisation != "cap")
     {
@@ -152,6 +157,7 @@ std::string CfdControls::describe() const
        << (rateWallFunction ? ", Eq. (1)'s wall function on the base" : "")
        << (faceViscosity ? ", the slide's viscosity at each face's rate" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;
+    if (baseSlideTrace > 0.0) os << ", base faces under less than " << baseSlideTrace << " of slide the ambient's";
     if (shearBandThickness > 0.0) os << ", xi counts shear bands " << shearBandThickness << " m thick";
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";
     return os.str();

@@ -22,6 +22,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(p, iF),
     transposeShearMean_(false),
     slideShare_(true),
+    slideTrace_(0),
     alphaName_("alpha.slide")
 {
     setStuck();
@@ -36,6 +37,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(p, iF),
     transposeShearMean_(false),
     slideShare_(true),
+    slideTrace_(dict.getOrDefault<scalar>("slideTrace", 0)),
     alphaName_(dict.getOrDefault<word>("alpha", "alpha.slide"))
 {
     setStuck();
@@ -46,6 +48,12 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
             << "key 'baseStrength': expected slideShare or wholeFace, got " << strength << exit(FatalIOError);
     }
     slideShare_ = (strength == "slideShare");
+    if (!(slideTrace_ >= 0 && slideTrace_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "key 'slideTrace': the alpha below which a base face is the ambient's must be in [0, 1), got "
+            << slideTrace_ << exit(FatalIOError);
+    }
     const word shear = dict.getOrDefault<word>("transposeShear", "nearKinks");
     if (shear != "nearKinks" && shear != "runningMean")
     {
@@ -73,6 +81,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(ptf, p, iF, mapper),
     transposeShearMean_(ptf.transposeShearMean_),
     slideShare_(ptf.slideShare_),
+    slideTrace_(ptf.slideTrace_),
     alphaName_(ptf.alphaName_)
 {}
 
@@ -85,6 +94,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(ptf, iF),
     transposeShearMean_(ptf.transposeShearMean_),
     slideShare_(ptf.slideShare_),
+    slideTrace_(ptf.slideTrace_),
     alphaName_(ptf.alphaName_)
 {}
 
@@ -138,13 +148,12 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
         const vectorField Uc(patchInternalField());
         const vectorField n(patch().nf());
         const scalarField& deltaCoeffs = patch().deltaCoeffs();
-        const scalarField share
+        const scalarField alpha
         (
-            slideShare_
-          ? scalarField(min(max(db().lookupObject<volScalarField>(alphaName_)
-                .boundaryField()[patchi].patchInternalField(), scalar(0)), scalar(1)))
-          : scalarField(size(), scalar(1))
+            min(max(db().lookupObject<volScalarField>(alphaName_).boundaryField()[patchi].patchInternalField(),
+                scalar(0)), scalar(1))
         );
+        const scalarField share(slideShare_ ? alpha : scalarField(size(), scalar(1)));
         const scalar muAmbient = slideShare_ ? ambientViscosity() : 0;
 
         forAll(Uc, facei)
@@ -155,6 +164,7 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
             const scalar k = mu*deltaCoeffs[facei];
             // The mixture's viscosity is the phases' shares of theirs: the
             // ambient's share of the face stays stuck with its own no-slip traction.
+            if (alpha[facei] < slideTrace_) continue;   // the ambient's face: stuck
             const scalar held = (1 - share[facei])*muAmbient*deltaCoeffs[facei]*speed;
             const scalar V = slipSpeed(iface, speed, k, share[facei], held);
             if (V <= 0) continue;   // stuck: the no-slip traction stays within s_b
@@ -406,6 +416,7 @@ void Foam::slideBaseVelocityFvPatchVectorField::write(Ostream& os) const
     fvPatchVectorField::write(os);
     if (transposeShearMean_) os.writeEntry("transposeShear", word("runningMean"));
     if (!slideShare_) os.writeEntry("baseStrength", word("wholeFace"));
+    if (slideTrace_ > 0) os.writeEntry("slideTrace", slideTrace_);
     if (alphaName_ != "alpha.slide") os.writeEntry("alpha", alphaName_);
     writeEntry("value", os);
 }

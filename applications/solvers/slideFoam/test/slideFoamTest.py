@@ -62,7 +62,10 @@ generated from SlideFoam scenes by slideFoamCase:
               each face (the default), so the block's mean speed follows the rigid
               block's law, planar and on a straight polyline; with s_b on every
               face the slide touches (baseStrength wholeFace) the smeared ends'
-              partly filled cells brake it by about 19 Pa more; on the polyline
+              partly filled cells brake it by about 19 Pa more; with the faces under
+              traces of slide (alpha < 1e-4) held as the ambient's (baseSlideTrace)
+              they are all stuck, the brake stays within 8 Pa and the block
+              stretches at least 0.1 m less than on the share alone; on the polyline
               with the solver's defaults but cfdDict transposeShear runningMean it
               follows the law too, and with the defaults alone (nearKinks, which
               pushed it 80 Pa) slideFoamCase warns
@@ -85,7 +88,8 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 top = os.path.abspath(os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(top, "validation", "lib"))
-from cfdcase import get_entry, make_case, prepare, run, run_slidefoam, read_field, set_entry, set_sites, time_dirs  # noqa: E402
+from cfdcase import (get_entry, make_case, patch_cells, prepare, run, run_slidefoam, read_field,  # noqa: E402
+                     read_patch, set_entry, set_sites, time_dirs)
 from runner import slidefoam_env, which  # noqa: E402
 from slidefoam_io import read_runout, read_summary  # noqa: E402
 
@@ -1136,15 +1140,29 @@ def test_baseStrength(work):
         prepare(case)
         return case
 
-    brake, cases = {}, {}
+    def trace_faces(case):
+        """Of the base faces at 20 s under cells that hold a trace of slide (0 < alpha < 1e-4) and move
+        (over 0.1 m/s), how many are stuck (the face's velocity 0) and how many slip."""
+        alpha = read_field(case, "20", "alpha.slide")
+        U = read_field(case, "20", "U")
+        faceU = read_patch(case, "20", "U", "base")
+        cells = patch_cells(case, "base")
+        trace = (alpha[cells] > 0) & (alpha[cells] < 1e-4) & (np.linalg.norm(U[cells], axis=1) > 0.1)
+        stuck = np.linalg.norm(faceU[trace], axis=1) == 0
+        return int(stuck.sum()), int((~stuck).sum())
+
+    brake, stretch, held, cases = {}, {}, {}, {}
     for name, base, cfd in (("planar", "planar", plug), ("polyline", "polyline", plug),
                             ("planar, wholeFace", "planar", dict(plug, baseStrength="wholeFace")),
+                            ("planar, slideTrace", "planar", dict(plug, baseSlideTrace="1e-4")),
                             # Only the base's half of conservePlugMomentum, the solver's plugCreepRate.
                             ("polyline, transposeShear runningMean", "polyline", {"transposeShear": "runningMean"})):
         case = cases[name] = block_case(name, base, cfd)
         U0 = open(os.path.join(case, "0.orig", "U")).read()
         check(("baseStrength    wholeFace;" in U0) == ("baseStrength" in cfd),
               "%s: 0/U's base says baseStrength wholeFace only where cfdDict asks it" % name)
+        check(("slideTrace      0.0001;" in U0) == ("baseSlideTrace" in cfd),
+              "%s: 0/U's base says slideTrace 0.0001 only where cfdDict asks it" % name)
         check("transposeShear  runningMean;" in U0,
               "%s: 0/U's base says transposeShear runningMean (cfdDict conservePlugMomentum or transposeShear)" % name)
         run_slidefoam(case)
@@ -1152,8 +1170,11 @@ def test_baseStrength(work):
         k = int(np.argmin(np.abs(np.asarray(r["time"]) - 20.0)))
         speed = np.sqrt(2*r["kineticEnergy"][k]/r["mass"][k])
         brake[name] = (law - speed)/20.0*rho*height
-        print("%s: mean speed %.4f m/s at 20 s, the rigid block %.4f m/s: a brake of %.1f Pa beyond s_b"
-              % (name, speed, law, brake[name]))
+        stretch[name] = r["front"][k] - r["rear"][k] - length
+        held[name] = trace_faces(case)
+        print("%s: mean speed %.4f m/s at 20 s, the rigid block %.4f m/s: a brake of %.1f Pa beyond s_b; the block "
+              "%.3f m longer; of the base faces under moving traces of slide, %d stuck and %d slipping"
+              % (name, speed, law, brake[name], stretch[name], held[name][0], held[name][1]))
     # (Measured: 0.7 Pa; with the solver's defaults, transposeShear nearKinks, a push of 79.5 Pa.)
     name = "polyline, transposeShear runningMean"
     check(abs(brake[name]) < 8.0, "%s alone: the block's brake beyond s_b = %.0f Pa is %.1f Pa (within 8 Pa)"
@@ -1170,6 +1191,18 @@ def test_baseStrength(work):
     for name in ("planar", "polyline"):
         check(abs(brake[name]) < 8.0, "%s base, s_b on the slide's share of each face: the block's brake beyond "
               "s_b = %.0f Pa is %.1f Pa (within 8 Pa)" % (name, s_b, brake[name]))
+    # Traces of plug around the block (alpha under 1e-4) give an ambient cell the plug's viscosity times alpha,
+    # so on the slide's share their faces slip and hold nothing; baseSlideTrace holds them as the ambient's.
+    # (Measured: 0 of 69 such faces stuck on the share, 67 of 67 with baseSlideTrace 1e-4; the block 0.440 and
+    # 0.272 m longer at 20 s, wholeFace 0.226 m; brakes 6.3 and 5.1 Pa.)
+    trace = "planar, slideTrace"
+    check(held[trace][0] > 0 and held[trace][1] == 0 and held["planar"][1] > held["planar"][0],
+          "base faces under moving traces of slide: %d stuck, %d slipping with baseSlideTrace 1e-4; %d stuck, %d "
+          "slipping on the slide's share alone" % (held[trace] + held["planar"]))
+    check(abs(brake[trace]) < 8.0, "%s: the block's brake beyond s_b is %.1f Pa (within 8 Pa)" % (trace, brake[trace]))
+    check(stretch[trace] < stretch["planar"] - 0.1,
+          "%s: the block stretches %.3f m by 20 s, at least 0.1 m less than on the slide's share alone (%.3f m)"
+          % (trace, stretch[trace], stretch["planar"]))
     check(brake["planar, wholeFace"] > brake["planar"] + 10.0,
           "s_b on every face the slide touches brakes the block by %.1f Pa beyond s_b, %.1f Pa more than on the "
           "slide's share (at least 10 Pa more)" % (brake["planar, wholeFace"], brake["planar, wholeFace"] - brake["planar"]))
