@@ -72,11 +72,12 @@ def table1_results():
     chosen = {}
     for r in load("cfd/table1.json") or []:
         if any(r.get(k) for k in ("xi_per_cell", "rate_free", "wall_function", "face_viscosity", "outer_correctors",
-                                  "max_delta_t", "max_co", "whole_face", "transpose_mean")):
+                                  "max_delta_t", "max_co", "whole_face", "transpose_mean", "slide_trace")):
             # The remoulding cases counted per cell, a comparison beside the tutorials' per-band rows; Case 1
             # without its rate term, another slide; the numerical options and steps the tutorials do not set
             # (the finer set-ups' table shows the converged ones); the frictional base's s_b on every face the
-            # slide touches, the base until session 90; the base's transpose flux's running mean (session 91's trial).
+            # slide touches, the base until session 90; the base's transpose flux's running mean (session 91's trial);
+            # the base under traces of slide held as the ambient's (session 94's option).
             continue
         if "runout" not in r:
             out[r["case"]].setdefault("CFD", {"failed": "`cfd/table1.md`", "cells": 0})
@@ -168,7 +169,8 @@ def converged_cfd_row(r):
     wall_function = r.get("wall_function") or not wall_function_acts(r["case"])
     return (r.get("cells") == 10 and base_cells(r) == 40 and r.get("max_delta_t") == 0.01 and wall_function
             and not any(r.get(k) for k in ("face_viscosity", "xi_per_cell", "rate_free", "outer_correctors",
-                                           "max_co", "top", "ahead_height", "whole_face", "transpose_mean")))
+                                           "max_co", "top", "ahead_height", "whole_face", "transpose_mean",
+                                           "slide_trace")))
 
 
 def finest_section(results, paper):

@@ -8,7 +8,8 @@ against the paper's CFD, at rest or not, wall time), table1.png and table1.json.
 Usage: validation/cfd/table1.py [--cells 10] [--cases 1,2,3] [--base-refinement 4] [--processors 2] [--keep]
                                  [--scene-end] [--ahead-height 0.75] [--ahead-from 20] [--behind 200]
                                  [--max-co 0.25] [--max-delta-t 0.01] [--outer-correctors] [--xi-per-cell]
-                                 [--rate-free] [--wall-function] [--whole-face] [--transpose-mean] [--top slip]
+                                 [--rate-free] [--wall-function] [--whole-face] [--transpose-mean] [--slide-trace]
+                                 [--top slip]
                                  [--reach 1600] [--end-time 100]
                                  [--replot] [--continue CASE_DIR --end-time 200]
 (after ./Allwmake; Cases 1-3 at H0/10 take a few minutes on 2 cores)"""
@@ -47,6 +48,8 @@ SWITCHES = [
     ("whole_face", "_wholeFace", ", s_b on every base face the slide touches", ("baseStrength", "wholeFace")),
     ("transpose_mean", "_transposeMean", ", the base's transpose flux's running mean taken out",
      ("transposeShear", "runningMean")),
+    ("slide_trace", "_slideTrace", ", base faces under less than 1e-4 of slide the ambient's",
+     ("baseSlideTrace", "1e-4")),
 ]
 
 
@@ -279,6 +282,9 @@ def main():
     ap.add_argument("--transpose-mean", action="store_true",
                     help="a slipping base takes out the explicit transpose flux's normal traction and running mean "
                          "(cfdDict transposeShear runningMean), not only near a polyline's kinks")
+    ap.add_argument("--slide-trace", action="store_true",
+                    help="a frictional base's faces under less than 1e-4 of slide held as the ambient's (cfdDict "
+                         "baseSlideTrace 1e-4: validation/cfd/README.md, \"Where the front's stress starts\")")
     ap.add_argument("--top", choices=["open", "slip"], default=None,
                     help="the mesh's top (cfdDict top; default open): slip closes it with a lid that keeps the spray "
                     "a fast thin head throws into the light ambient (Case 4) in the domain")

@@ -162,9 +162,11 @@ void Foam::slideBaseVelocityFvPatchVectorField::updateCoeffs()
             const scalar speed = mag(Ut);
             const scalar mu = rhow[facei]*nuw[facei];
             const scalar k = mu*deltaCoeffs[facei];
+            // A trace of plug gives an ambient cell the plug's viscosity times alpha:
+            // with slideTrace such a face is the ambient's, stuck.
+            if (alpha[facei] < slideTrace_) continue;
             // The mixture's viscosity is the phases' shares of theirs: the
             // ambient's share of the face stays stuck with its own no-slip traction.
-            if (alpha[facei] < slideTrace_) continue;   // the ambient's face: stuck
             const scalar held = (1 - share[facei])*muAmbient*deltaCoeffs[facei]*speed;
             const scalar V = slipSpeed(iface, speed, k, share[facei], held);
             if (V <= 0) continue;   // stuck: the no-slip traction stays within s_b
