@@ -21,6 +21,9 @@ the ambient's: the traces of plug around the block otherwise leave the base ther
 
 Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace] [--end 100]
                                       [--cells N] [--work DIR]
+       validation/cfd/plugStretch.py --measure CASE
+--measure: measure a finished, reconstructed slideFoam run of a block instead (the Finneidfjord tutorial's on its
+polyline, whose columns stand vertical): the same table, printed, nothing run or written.
 (after ./Allwmake; 8-15 minutes a variant on one core, the variants one after the other; writes plugStretch.md
 and plugStretch.json beside this script, plugStretch_H0_<N>.md/.json with --cells N)"""
 import argparse
@@ -123,13 +126,13 @@ def block_case(variant, work, end, cells):
 
 def shape(d, H0):
     """Per written time: the block's columns, measured from its cells."""
-    V, Cx, Cy = cell_geometry(d)
+    V, Cx, _ = cell_geometry(d)
     Cx = np.round(Cx, 6)
     xs = np.unique(Cx)
     dx = float(np.median(np.diff(xs)))
     column = np.searchsorted(xs, Cx)
-    base = np.abs(Cy - Cy.min()) < 1e-6
-    depth = V[base][0] / (dx * 2 * Cy.min())
+    # slideFoamCase's meshes span z from 0 to their depth (meshLayout.C), planar or over a polyline.
+    depth = 2 * float(read_field(d, "0", "Cz")[0])
     muMax = float(get_entry(os.path.join(d, "constant", "transportProperties"), "muMax"))
     # The slide phase is transportProperties' first.
     rho = float(get_entry(os.path.join(d, "constant", "transportProperties"), "rho"))
@@ -169,9 +172,13 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--end", type=float, default=100.0)
     ap.add_argument("--cells", type=int, default=None, help="cells per H0 (default: the tutorial's cfdDict)")
+    ap.add_argument("--measure", default=None, help="a finished, reconstructed block run to measure (no run)")
     args, variants, work = variant_arguments(ap, VARIANTS, "plugStretch", "a variant already run there to --end "
                                              "(its runout.dat reaching it) is read, not rerun")
     H0 = tutorial_scene()[0]["height"]
+    if args.measure:
+        print_rows(shape(args.measure, H0))
+        return
     results = {}
     for v in variants:
         d = os.path.join(work, case_name(v, args.cells))
@@ -187,6 +194,26 @@ def main():
               % (v, last["t"], last["length"], last["body"], last["tongue"], last["tongue_area"],
                  last["neck_deficit"]), flush=True)
     write_report(results, args)
+
+
+def row_cells(x):
+    """A measured time's table cells after its time: speed, length, body, tongue, tail, necks, yielding."""
+    y = ("%.1f, %.1f" % (x["front_yield"], x["rear_yield"])) if "front_yield" in x else "-"
+    c = ("%d of %d" % (x["yielding_cells"], x["full_cells"])) if "full_cells" in x else "-"
+    return ("%.3f | %.2f | %.1f | %.1f, %.2f | %.1f, %.2f | %.2f | %s | %s"
+            % (x["speed"], x["length"], x["body"], x["tongue"], x["tongue_area"], x["tail"], x["tail_area"],
+               x["neck_deficit"], y, c))
+
+
+HEADER = ("t [s] | speed [m/s] | length [m] | body [m] | tongue [m], [m2] | tail [m], [m2] | neck deficit [m2] "
+          "| yielding from the front, rear [m] | yielding cells of full")
+
+
+def print_rows(rows):
+    print(HEADER)
+    for x in rows:
+        if x["t"] > 0:
+            print("%g | %s" % (x["t"], row_cells(x)))
 
 
 def write_report(results, args):
@@ -210,18 +237,12 @@ def write_report(results, args):
              "|---|---|"]
     for v, r in results.items():
         lines.append("| %s: %s | %s |" % (v, VARIANTS[v], "%.0f" % r["wall"] if r["wall"] else "-"))
-    lines += ["", "| variant | t [s] | speed [m/s] | length [m] | body [m] | tongue [m], [m2] | tail [m], [m2] "
-              "| neck deficit [m2] | yielding from the front, rear [m] | yielding cells of full |",
-              "|---|---|---|---|---|---|---|---|---|---|"]
+    lines += ["", "| variant | %s |" % HEADER, "|---|---|---|---|---|---|---|---|---|---|"]
     for v, r in results.items():
         for x in r["rows"]:
             if x["t"] == 0 or (x["t"] % 20 and x["t"] != r["rows"][-1]["t"]):
                 continue
-            y = ("%.1f, %.1f" % (x["front_yield"], x["rear_yield"])) if "front_yield" in x else "-"
-            c = ("%d of %d" % (x["yielding_cells"], x["full_cells"])) if "full_cells" in x else "-"
-            lines.append("| %s | %g | %.3f | %.2f | %.1f | %.1f, %.2f | %.1f, %.2f | %.2f | %s | %s |"
-                         % (v, x["t"], x["speed"], x["length"], x["body"], x["tongue"], x["tongue_area"],
-                            x["tail"], x["tail_area"], x["neck_deficit"], y, c))
+            lines.append("| %s | %g | %s |" % (v, x["t"], row_cells(x)))
     write_study(here, name, lines, results)
 
 
