@@ -20,8 +20,9 @@ stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces und
 the ambient's: the traces of plug around the block otherwise leave the base there frictionless).
 
 Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace] [--end 100]
-                                      [--cells N] [--work DIR]
+                                      [--cells N] [--speed V] [--work DIR]
        validation/cfd/plugStretch.py --measure CASE
+--speed: start the block at this speed instead of 4 m/s (its report plugStretch[_H0_<N>]_V<speed>.md/.json).
 --measure: measure a finished, reconstructed slideFoam run of a block instead (the Finneidfjord tutorial's on its
 polyline, whose columns stand vertical): the same table, printed, nothing run or written.
 (after ./Allwmake; 8-15 minutes a variant on one core, the variants one after the other; writes plugStretch.md
@@ -44,7 +45,7 @@ from cfdcase import (cell_geometry, get_entry, make_case, prepare, read_field, r
 from slidefoam_io import read_runout  # noqa: E402
 
 TEMPLATE = os.path.join(top, "tutorials", "finneidfjord")
-LENGTH, V0 = 20.0, 4.0
+LENGTH, SPEED = 20.0, 4.0
 VARIANTS = {
     "default": "the tutorial's set-up: s_b on the slide's share of each base face",
     "wholeFace": "s_b on every face whose cell holds slide (cfdDict baseStrength wholeFace)",
@@ -85,12 +86,13 @@ def tutorial_scene():
     return values, cfd
 
 
-def case_name(variant, cells):
-    """A run's directory: the variant's name, with its mesh where that is not the tutorial's."""
-    return variant if cells is None else "%s_H0_%d" % (variant, cells)
+def case_name(variant, cells, speed=SPEED):
+    """A run's directory: the variant's name, with its mesh where that is not the tutorial's and its start speed
+    where that is not SPEED."""
+    return variant + ("" if cells is None else "_H0_%d" % cells) + ("" if speed == SPEED else "_V%g" % speed)
 
 
-def block_case(variant, work, end, cells):
+def block_case(variant, work, end, cells, speed=SPEED):
     sc, cfd = tutorial_scene()
     angle = math.degrees(math.asin(sc["s_b"] / (sc["density"] * 9.81 * sc["height"])))
     text = ("FoamFile { version 2.0; format ascii; class dictionary; object sceneProperties; }\n"
@@ -100,17 +102,17 @@ def block_case(variant, work, end, cells):
             "base { profile planar; angle %.6f; interface frictional; s_b %.10g; }\nambient { phase light; }\n"
             % (LENGTH, sc["height"], sc["density"], sc["s_uo"], angle, sc["s_b"]))
     # Serial, on a mesh that reaches as far as the rigid block slides.
-    cfd = dict(cfd, processors=1, reach=int(V0 * end + 20), behind=10, **EXTRA[variant])
+    cfd = dict(cfd, processors=1, reach=int(speed * end + 20), behind=10, **EXTRA[variant])
     if cells is not None:
         cfd["cellsPerHeight"] = cells
-    d = make_case(TEMPLATE, work, case_name(variant, cells), control={"endTime": end, "writeInterval": 10}, cfd=cfd,
+    d = make_case(TEMPLATE, work, case_name(variant, cells, speed), control={"endTime": end, "writeInterval": 10}, cfd=cfd,
                   dicts={"constant/sceneProperties": text})
     prepare(d)
-    # The slide at V0 along the slope, the ambient at rest.
+    # The slide at its start speed along the slope, the ambient at rest.
     path = os.path.join(d, "0", "U")
     alpha = np.clip(read_field(d, "0", "alpha.slide"), 0, 1)
     body = "internalField   nonuniform List<vector>\n%d\n(\n%s\n)\n;" % (
-        len(alpha), "\n".join("(%.6g 0 0)" % (V0 * a) for a in alpha))
+        len(alpha), "\n".join("(%.6g 0 0)" % (speed * a) for a in alpha))
     text = open(path).read()
     new = re.sub(r"internalField\s+uniform\s*\([^)]*\)\s*;", body, text, count=1)
     if new == text:
@@ -172,6 +174,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--end", type=float, default=100.0)
     ap.add_argument("--cells", type=int, default=None, help="cells per H0 (default: the tutorial's cfdDict)")
+    ap.add_argument("--speed", type=float, default=SPEED, help="the block's start speed, m/s (default %g)" % SPEED)
     ap.add_argument("--measure", default=None, help="a finished, reconstructed block run to measure (no run)")
     args, variants, work = variant_arguments(ap, VARIANTS, "plugStretch", "a variant already run there to --end "
                                              "(its runout.dat reaching it) is read, not rerun")
@@ -181,12 +184,12 @@ def main():
         return
     results = {}
     for v in variants:
-        d = os.path.join(work, case_name(v, args.cells))
+        d = os.path.join(work, case_name(v, args.cells, args.speed))
         runout = os.path.join(d, "postProcessing", "slideFoam", "runout.dat")
         done = os.path.exists(runout) and read_runout(runout)["time"][-1] >= args.end - 1e-6
         if not done:
             print("%s: running slideFoam to %g s (serial)" % (v, args.end), flush=True)
-            d = block_case(v, work, args.end, args.cells)
+            d = block_case(v, work, args.end, args.cells, args.speed)
         wall = os.path.join(d, "wall.txt")
         results[v] = {"rows": shape(d, H0), "wall": float(open(wall).read()) if os.path.exists(wall) else None}
         last = results[v]["rows"][-1]
@@ -219,10 +222,11 @@ def print_rows(rows):
 def write_report(results, args):
     sc, cfd = tutorial_scene()
     mesh = ("its mesh H0/%s" % cfd["cellsPerHeight"]) if args.cells is None else ("a mesh of H0/%d" % args.cells)
-    name = "plugStretch" + ("" if args.cells is None else "_H0_%d" % args.cells)
+    name = "plugStretch" + ("" if args.cells is None else "_H0_%d" % args.cells) + (
+        "" if args.speed == SPEED else "_V%g" % args.speed)
     lines = ["# A plug that should slide rigid: slideFoam's stretch of the Finneidfjord block",
              "",
-             "Written by `validation/cfd/plugStretch.py --end %g%s`. The tutorial's block (H0 %g m, s_uo %g Pa, "
+             "Written by `validation/cfd/plugStretch.py --end %g%s%s`. The tutorial's block (H0 %g m, s_uo %g Pa, "
              "%g kg/m3, no rate effect, the tutorial's plug set-up, %s) cut to %g m, started at %g m/s "
              "on a planar base at the angle where its weight along the slope equals s_b = %.2f Pa: a rigid block "
              "slides on at %g m/s. Its spreading stress rho' g H0/2 = %.1f kPa is a third of s_u, so it cannot "
@@ -230,7 +234,8 @@ def write_report(results, args):
              "behind it; necks: the body's area short of H0 over its length; yielding: full cells (alpha > 0.99) "
              "whose viscosity is below a tenth of the cap, how far they reach from the block's ends."
              % (args.end, "" if args.cells is None else " --cells %d" % args.cells,
-                sc["height"], sc["s_uo"], sc["density"], mesh, LENGTH, V0, sc["s_b"], V0,
+                "" if args.speed == SPEED else " --speed %g" % args.speed,
+                sc["height"], sc["s_uo"], sc["density"], mesh, LENGTH, args.speed, sc["s_b"], args.speed,
                 sc["density"] * 9.81 * sc["height"] / 2 / 1000),
              "",
              "| variant | wall [s] |",
