@@ -17,9 +17,10 @@ Variants: default (the tutorial's set-up: s_b on the slide's share of each base 
 whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default with the light ambient relaxed
 to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's viscosity at each face's own rate),
 stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces under less than 1e-4 of slide stuck as
-the ambient's: the traces of plug around the block otherwise leave the base there frictionless).
+the ambient's: the traces of plug around the block otherwise leave the base there frictionless), slideTrace1e-3 and
+slideTrace1e-2 (the same with floors of 1e-3 and 1e-2).
 
-Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace] [--end 100]
+Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace,...] [--end 100]
                                       [--cells N] [--speed V] [--work DIR]
        validation/cfd/plugStretch.py --measure CASE
 --speed: start the block at this speed instead of 4 m/s (its report plugStretch[_H0_<N>]_V<speed>.md/.json).
@@ -53,10 +54,13 @@ VARIANTS = {
     "faceViscosity": "the default, the slide's viscosity at each face's own strain rate (cfdDict faceViscosity yes)",
     "stifferCap": "the default at a third of the tutorial's plugCreepRate, a cap three times as high",
     "slideTrace": "the default, base faces whose cell holds under 1e-4 of slide the ambient's (cfdDict baseSlideTrace 1e-4)",
+    "slideTrace1e-3": "slideTrace with a floor of 1e-3 (cfdDict baseSlideTrace 1e-3)",
+    "slideTrace1e-2": "slideTrace with a floor of 1e-2 (cfdDict baseSlideTrace 1e-2)",
 }
 EXTRA = {"default": {}, "wholeFace": {"baseStrength": "wholeFace"}, "ambientRelax": {"ambientRelaxationTime": 0.5},
          "faceViscosity": {"faceViscosity": "yes"}, "stifferCap": {"plugCreepRate": "2.461e-4"},
-         "slideTrace": {"baseSlideTrace": "1e-4"}}
+         "slideTrace": {"baseSlideTrace": "1e-4"}, "slideTrace1e-3": {"baseSlideTrace": "1e-3"},
+         "slideTrace1e-2": {"baseSlideTrace": "1e-2"}}
 
 
 def tutorial_scene():
