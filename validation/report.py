@@ -39,6 +39,12 @@ def load(rel):
     return json.load(open(path)) if os.path.isfile(path) else None
 
 
+# A slideFoam row run with one of these (cfd/table1.py's switches) is a study beside the tutorials' set-up, kept out
+# of both the everyday and the converged columns.
+STUDY_OPTIONS = ("xi_per_cell", "rate_free", "face_viscosity", "outer_correctors", "max_co", "whole_face",
+                 "transpose_mean", "slide_trace")
+
+
 def table1_results():
     """{case: {method: result dict}} at each method's Table 1 resolution (the finest stored for MPM and CFD
     that covers most cases: H0/10; for MPM the finer set-up of mpm/table1.py's FINE where a case needs one)."""
@@ -71,8 +77,7 @@ def table1_results():
         return not unresolved(r), r["cells"] == 10, base_cells(r) == 40, r["cells"]
     chosen = {}
     for r in load("cfd/table1.json") or []:
-        if any(r.get(k) for k in ("xi_per_cell", "rate_free", "wall_function", "face_viscosity", "outer_correctors",
-                                  "max_delta_t", "max_co", "whole_face", "transpose_mean", "slide_trace")):
+        if any(r.get(k) for k in STUDY_OPTIONS + ("wall_function", "max_delta_t")):
             # The remoulding cases counted per cell, a comparison beside the tutorials' per-band rows; Case 1
             # without its rate term, another slide; the numerical options and steps the tutorials do not set
             # (the finer set-ups' table shows the converged ones); the frictional base's s_b on every face the
@@ -168,9 +173,7 @@ def converged_cfd_row(r):
     the tutorials' options otherwise, on a mesh run longer where the slide left the first."""
     wall_function = r.get("wall_function") or not wall_function_acts(r["case"])
     return (r.get("cells") == 10 and base_cells(r) == 40 and r.get("max_delta_t") == 0.01 and wall_function
-            and not any(r.get(k) for k in ("face_viscosity", "xi_per_cell", "rate_free", "outer_correctors",
-                                           "max_co", "top", "ahead_height", "whole_face", "transpose_mean",
-                                           "slide_trace")))
+            and not any(r.get(k) for k in STUDY_OPTIONS + ("top", "ahead_height")))
 
 
 def finest_section(results, paper):

@@ -54,13 +54,13 @@ VARIANTS = {
     "faceViscosity": "the default, the slide's viscosity at each face's own strain rate (cfdDict faceViscosity yes)",
     "stifferCap": "the default at a third of the tutorial's plugCreepRate, a cap three times as high",
     "slideTrace": "the default, base faces whose cell holds under 1e-4 of slide the ambient's (cfdDict baseSlideTrace 1e-4)",
-    "slideTrace1e-3": "slideTrace with a floor of 1e-3 (cfdDict baseSlideTrace 1e-3)",
-    "slideTrace1e-2": "slideTrace with a floor of 1e-2 (cfdDict baseSlideTrace 1e-2)",
 }
 EXTRA = {"default": {}, "wholeFace": {"baseStrength": "wholeFace"}, "ambientRelax": {"ambientRelaxationTime": 0.5},
          "faceViscosity": {"faceViscosity": "yes"}, "stifferCap": {"plugCreepRate": "2.461e-4"},
-         "slideTrace": {"baseSlideTrace": "1e-4"}, "slideTrace1e-3": {"baseSlideTrace": "1e-3"},
-         "slideTrace1e-2": {"baseSlideTrace": "1e-2"}}
+         "slideTrace": {"baseSlideTrace": "1e-4"}}
+for floor in ("1e-3", "1e-2"):
+    VARIANTS["slideTrace" + floor] = "slideTrace with a floor of %s (cfdDict baseSlideTrace %s)" % (floor, floor)
+    EXTRA["slideTrace" + floor] = {"baseSlideTrace": floor}
 
 
 def tutorial_scene():
