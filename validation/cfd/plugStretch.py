@@ -13,12 +13,13 @@ thicker than 0.6 H0), the tongue on the base ahead of the body and the tail behi
 cells (alpha > 0.99) are yielding (their viscosity below a tenth of the cap, i.e. a strain rate over ten times
 plugCreepRate).
 
-Variants: default (the tutorial's set-up: s_b on the slide's share of each base face), wholeFace (s_b on every face
-whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default with the light ambient relaxed
-to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's viscosity at each face's own rate),
+Variants: default (the tutorial's set-up but its baseSlideTrace: s_b on the slide's share of each base face),
+wholeFace (s_b on every face whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default
+with the light ambient relaxed to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's viscosity at each face's own rate),
 stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces under less than 1e-4 of slide stuck as
 the ambient's: the traces of plug around the block otherwise leave the base there frictionless), slideTrace1e-3 and
-slideTrace1e-2 (the same with floors of 1e-3 and 1e-2).
+slideTrace1e-2 (the same with floors of 1e-3 and 1e-2), defaultHalfStep and slideTraceHalfStep (those two with the time
+step halved, maxDeltaT 0.0025 s).
 
 Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace,...] [--end 100]
                                       [--cells N] [--speed V] [--work DIR]
@@ -48,7 +49,7 @@ from slidefoam_io import read_runout  # noqa: E402
 TEMPLATE = os.path.join(top, "tutorials", "finneidfjord")
 LENGTH, SPEED = 20.0, 4.0
 VARIANTS = {
-    "default": "the tutorial's set-up: s_b on the slide's share of each base face",
+    "default": "the tutorial's set-up but its baseSlideTrace: s_b on the slide's share of each base face",
     "wholeFace": "s_b on every face whose cell holds slide (cfdDict baseStrength wholeFace)",
     "ambientRelax": "the default, the light ambient relaxed to rest in 0.5 s (cfdDict ambientRelaxationTime 0.5)",
     "faceViscosity": "the default, the slide's viscosity at each face's own strain rate (cfdDict faceViscosity yes)",
@@ -61,11 +62,17 @@ EXTRA = {"default": {}, "wholeFace": {"baseStrength": "wholeFace"}, "ambientRela
 for floor in ("1e-3", "1e-2"):
     VARIANTS["slideTrace" + floor] = "slideTrace with a floor of %s (cfdDict baseSlideTrace %s)" % (floor, floor)
     EXTRA["slideTrace" + floor] = {"baseSlideTrace": floor}
+# The time step halved (the tutorial's maxDeltaT 0.005 s sets it; Co stays under 0.2): whether the front's numerical
+# stress at speed is the step's.
+CONTROL = {}
+for base in ("default", "slideTrace"):
+    VARIANTS[base + "HalfStep"] = "%s, maxDeltaT halved to 0.0025 s" % base
+    EXTRA[base + "HalfStep"], CONTROL[base + "HalfStep"] = EXTRA[base], {"maxDeltaT": 0.0025}
 
 
 def tutorial_scene():
     """height, density, s_uo, s_b of the Finneidfjord tutorial's block with slideDAM's constant s_b, and the
-    tutorial's cfdDict entries."""
+    tutorial's cfdDict entries but its baseSlideTrace."""
     path = os.path.join(TEMPLATE, "constant", "sceneProperties")
     text = open(path).read()
     slide = re.search(r"slide\s*\{([^}]*)\}", text).group(1)
@@ -85,7 +92,9 @@ def tutorial_scene():
     cfd = {}
     for line in open(os.path.join(TEMPLATE, "system", "cfdDict")):
         m = re.match(r"^\s*(\w+)\s+([^;]+);", line)
-        if m and m.group(1) not in ("FoamFile", "version", "format", "class", "object"):
+        # The base's trace floor is a variant here (slideTrace...): "default" is the share alone, as the tutorial
+        # was until session 96 set baseSlideTrace 1e-3.
+        if m and m.group(1) not in ("FoamFile", "version", "format", "class", "object", "baseSlideTrace"):
             cfd[m.group(1)] = m.group(2).strip()
     return values, cfd
 
@@ -109,7 +118,7 @@ def block_case(variant, work, end, cells, speed=SPEED):
     cfd = dict(cfd, processors=1, reach=int(speed * end + 20), behind=10, **EXTRA[variant])
     if cells is not None:
         cfd["cellsPerHeight"] = cells
-    d = make_case(TEMPLATE, work, case_name(variant, cells, speed), control={"endTime": end, "writeInterval": 10}, cfd=cfd,
+    d = make_case(TEMPLATE, work, case_name(variant, cells, speed), control=dict({"endTime": end, "writeInterval": 10}, **CONTROL.get(variant, {})), cfd=cfd,
                   dicts={"constant/sceneProperties": text})
     prepare(d)
     # The slide at its start speed along the slope, the ambient at rest.
