@@ -19,7 +19,8 @@ with the light ambient relaxed to rest in 0.5 s, cfdDict ambientRelaxationTime),
 stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces under less than 1e-4 of slide stuck as
 the ambient's: the traces of plug around the block otherwise leave the base there frictionless), slideTrace1e-3 and
 slideTrace1e-2 (the same with floors of 1e-3 and 1e-2), defaultHalfStep and slideTraceHalfStep (those two with the time
-step halved, maxDeltaT 0.0025 s), slideTraceAlphaCo (slideTrace with the interface's Courant number held to 0.035).
+step halved, maxDeltaT 0.0025 s), slideTraceAlphaCo (slideTrace with the interface's Courant number held to 0.035), slideTrace1e-3AlphaCo (slideTrace1e-3
+with it held to 0.07).
 
 Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace,...] [--end 100]
                                       [--cells N] [--speed V] [--work DIR]
@@ -72,6 +73,9 @@ for base in ("default", "slideTrace"):
 # on H0/4 cells is 0.07 at the tutorial's step, capped at 0.035.
 VARIANTS["slideTraceAlphaCo"] = "slideTrace, maxAlphaCo 0.035 (the tutorial's 0.5)"
 EXTRA["slideTraceAlphaCo"], CONTROL["slideTraceAlphaCo"] = EXTRA["slideTrace"], {"maxAlphaCo": 0.035}
+# On H0/8 cells the tutorial's step moves a 7 m/s block 0.14 cells: 0.07, as on H0/4, asks for maxAlphaCo 0.07.
+VARIANTS["slideTrace1e-3AlphaCo"] = "slideTrace1e-3, maxAlphaCo 0.07 (the tutorial's 0.5)"
+EXTRA["slideTrace1e-3AlphaCo"], CONTROL["slideTrace1e-3AlphaCo"] = EXTRA["slideTrace1e-3"], {"maxAlphaCo": 0.07}
 
 
 def tutorial_scene():
