@@ -15,12 +15,12 @@ plugCreepRate).
 
 Variants: default (the tutorial's set-up but its baseSlideTrace: s_b on the slide's share of each base face),
 wholeFace (s_b on every face whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default
-with the light ambient relaxed to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's viscosity at each face's own rate),
-stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces under less than 1e-4 of slide stuck as
-the ambient's: the traces of plug around the block otherwise leave the base there frictionless), slideTrace1e-3 and
-slideTrace1e-2 (the same with floors of 1e-3 and 1e-2), defaultHalfStep and slideTraceHalfStep (those two with the time
-step halved, maxDeltaT 0.0025 s), slideTraceAlphaCo (slideTrace with the interface's Courant number held to 0.035), slideTrace1e-3AlphaCo (slideTrace1e-3
-with it held to 0.07).
+with the light ambient relaxed to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's
+viscosity at each face's own rate), stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces
+under less than 1e-4 of slide stuck as the ambient's: the traces of plug around the block otherwise leave the base
+there frictionless), slideTrace1e-3 and slideTrace1e-2 (the same with floors of 1e-3 and 1e-2), defaultHalfStep and
+slideTraceHalfStep (those two with the time step halved, maxDeltaT 0.0025 s), slideTraceAlphaCo (slideTrace with the
+interface's Courant number held to 0.035), slideTrace1e-3AlphaCo (slideTrace1e-3 with it held to 0.07).
 
 Usage: validation/cfd/plugStretch.py [--variants default,wholeFace,ambientRelax,faceViscosity,stifferCap,slideTrace,...] [--end 100]
                                       [--cells N] [--speed V] [--work DIR]
@@ -126,7 +126,8 @@ def block_case(variant, work, end, cells, speed=SPEED):
     cfd = dict(cfd, processors=1, reach=int(speed * end + 20), behind=10, **EXTRA[variant])
     if cells is not None:
         cfd["cellsPerHeight"] = cells
-    d = make_case(TEMPLATE, work, case_name(variant, cells, speed), control=dict({"endTime": end, "writeInterval": 10}, **CONTROL.get(variant, {})), cfd=cfd,
+    control = dict({"endTime": end, "writeInterval": 10}, **CONTROL.get(variant, {}))
+    d = make_case(TEMPLATE, work, case_name(variant, cells, speed), control=control, cfd=cfd,
                   dicts={"constant/sceneProperties": text})
     prepare(d)
     # The slide at its start speed along the slope, the ambient at rest.
