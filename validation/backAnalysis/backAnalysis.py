@@ -6,7 +6,7 @@ slideMPM each solve for the entry that reproduces the observation:
 - Finneidfjord's outrunner block on a constant basal resistance s_b (the paper: a runout of 1380 m needs s_b below
   60 Pa, against a static limit of 161 Pa), checked against the rigid block's equation of motion on the tutorial's
   base, which gives the exact s_b for a block that stays rigid; the scene's end at 1200 s, so that every run stops;
-  slideFoam run once with slideDAM's answer (check_at; about two hours on 2 MPI ranks since session 90's base; its
+  slideFoam run once with slideDAM's answer (check_at; 84 min to two hours on 2 MPI ranks since session 90's base; its
   block stops 1.3 % (session 89) or 4.0 % (session 92, on the slide's share) short of the rigid block, and
   0.5 % with the tutorial's baseSlideTrace 1e-3 (session 97, 84 min), ../cfd/README.md);
 - the same block hydroplaning (s_b = 0.5 rho_w C_F V^2): the drag coefficient C_F for 1380 m (the paper takes
