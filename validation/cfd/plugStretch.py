@@ -13,7 +13,8 @@ thicker than 0.6 H0), the tongue on the base ahead of the body and the tail behi
 cells (alpha > 0.99) are yielding (their viscosity below a tenth of the cap, i.e. a strain rate over ten times
 plugCreepRate).
 
-Variants: default (the tutorial's set-up but its baseSlideTrace: s_b on the slide's share of each base face),
+Variants: default (the tutorial's set-up but its baseSlideTrace, set to 0: s_b on the slide's share of each base face,
+the solver's default until session 98),
 wholeFace (s_b on every face whose cell holds slide, slideFoam's base until session 90), ambientRelax (the default
 with the light ambient relaxed to rest in 0.5 s, cfdDict ambientRelaxationTime), faceViscosity (the slide's
 viscosity at each face's own rate), stifferCap (a third of the tutorial's plugCreepRate), slideTrace (base faces
@@ -50,7 +51,7 @@ from slidefoam_io import read_runout  # noqa: E402
 TEMPLATE = os.path.join(top, "tutorials", "finneidfjord")
 LENGTH, SPEED = 20.0, 4.0
 VARIANTS = {
-    "default": "the tutorial's set-up but its baseSlideTrace: s_b on the slide's share of each base face",
+    "default": "the tutorial's set-up but its baseSlideTrace (0): s_b on the slide's share of each base face",
     "wholeFace": "s_b on every face whose cell holds slide (cfdDict baseStrength wholeFace)",
     "ambientRelax": "the default, the light ambient relaxed to rest in 0.5 s (cfdDict ambientRelaxationTime 0.5)",
     "faceViscosity": "the default, the slide's viscosity at each face's own strain rate (cfdDict faceViscosity yes)",
@@ -80,7 +81,7 @@ EXTRA["slideTrace1e-3AlphaCo"], CONTROL["slideTrace1e-3AlphaCo"] = EXTRA["slideT
 
 def tutorial_scene():
     """height, density, s_uo, s_b of the Finneidfjord tutorial's block with slideDAM's constant s_b, and the
-    tutorial's cfdDict entries but its baseSlideTrace."""
+    tutorial's cfdDict entries but its baseSlideTrace, which is 0 (the variants set their own)."""
     path = os.path.join(TEMPLATE, "constant", "sceneProperties")
     text = open(path).read()
     slide = re.search(r"slide\s*\{([^}]*)\}", text).group(1)
@@ -101,9 +102,10 @@ def tutorial_scene():
     for line in open(os.path.join(TEMPLATE, "system", "cfdDict")):
         m = re.match(r"^\s*(\w+)\s+([^;]+);", line)
         # The base's trace floor is a variant here (slideTrace...): "default" is the share alone, as the tutorial
-        # was until session 96 set baseSlideTrace 1e-3.
+        # was until session 96 set baseSlideTrace 1e-3 (and the solver until session 98).
         if m and m.group(1) not in ("FoamFile", "version", "format", "class", "object", "baseSlideTrace"):
             cfd[m.group(1)] = m.group(2).strip()
+    cfd["baseSlideTrace"] = "0"
     return values, cfd
 
 

@@ -158,6 +158,7 @@ std::string CfdControls::describe() const
        << (faceViscosity ? ", the slide's viscosity at each face's rate" : "")
        << ", momentum tolerance " << momentumTolerance << ", processors " << processors;
     if (baseSlideTrace > 0.0) os << ", base faces under less than " << baseSlideTrace << " of slide the ambient's";
+    else os << ", no slide-trace floor on the base";
     if (shearBandThickness > 0.0) os << ", xi counts shear bands " << shearBandThickness << " m thick";
     if (endTime > 0.0) os << ", slideFoam ends at " << endTime << " s";
     return os.str();

@@ -354,7 +354,7 @@ int main(int argc, char** argv)
               + " base from constant/sceneProperties\n"
               + "        transposeShear  " + c.transposeShear + ";   // cfdDict transposeShear\n"
               + (c.baseStrength == "wholeFace" ? "        baseStrength    wholeFace;   // cfdDict baseStrength\n" : "")
-              + (c.baseSlideTrace > 0.0 ? "        slideTrace      " + num(c.baseSlideTrace) + ";   // cfdDict baseSlideTrace\n" : "")
+              + "        slideTrace      " + num(c.baseSlideTrace) + ";   // cfdDict baseSlideTrace\n"
               + "        value           uniform (0 0 0);\n";
         const std::string rearU = sc.slide.rearWall ? "        type            noSlip;\n"
             : "        type            pressureInletOutletVelocity;\n        value           uniform (0 0 0);\n";

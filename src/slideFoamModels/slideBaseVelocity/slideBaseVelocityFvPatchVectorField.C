@@ -22,7 +22,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(p, iF),
     transposeShearMean_(false),
     slideShare_(true),
-    slideTrace_(0),
+    slideTrace_(1e-3),
     alphaName_("alpha.slide")
 {
     setStuck();
@@ -37,7 +37,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(p, iF),
     transposeShearMean_(false),
     slideShare_(true),
-    slideTrace_(dict.getOrDefault<scalar>("slideTrace", 0)),
+    slideTrace_(dict.getOrDefault<scalar>("slideTrace", 1e-3)),
     alphaName_(dict.getOrDefault<word>("alpha", "alpha.slide"))
 {
     setStuck();
@@ -418,7 +418,7 @@ void Foam::slideBaseVelocityFvPatchVectorField::write(Ostream& os) const
     fvPatchVectorField::write(os);
     if (transposeShearMean_) os.writeEntry("transposeShear", word("runningMean"));
     if (!slideShare_) os.writeEntry("baseStrength", word("wholeFace"));
-    if (slideTrace_ > 0) os.writeEntry("slideTrace", slideTrace_);
+    os.writeEntry("slideTrace", slideTrace_);
     if (alphaName_ != "alpha.slide") os.writeEntry("alpha", alphaName_);
     writeEntry("value", os);
 }
