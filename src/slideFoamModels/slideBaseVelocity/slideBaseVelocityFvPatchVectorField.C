@@ -6,6 +6,9 @@
 #include "ListListOps.H"
 #include <algorithm>
 
+// C++11: getOrDefault binds it to a reference, which needs its definition.
+constexpr Foam::scalar Foam::slideBaseVelocityFvPatchVectorField::defaultSlideTrace;
+
 void Foam::slideBaseVelocityFvPatchVectorField::setStuck()
 {
     refValue() = Zero;
@@ -22,7 +25,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(p, iF),
     transposeShearMean_(false),
     slideShare_(true),
-    slideTrace_(1e-3),
+    slideTrace_(defaultSlideTrace),
     alphaName_("alpha.slide")
 {
     setStuck();
@@ -37,7 +40,7 @@ Foam::slideBaseVelocityFvPatchVectorField::slideBaseVelocityFvPatchVectorField
     directionMixedFvPatchVectorField(p, iF),
     transposeShearMean_(false),
     slideShare_(true),
-    slideTrace_(dict.getOrDefault<scalar>("slideTrace", 1e-3)),
+    slideTrace_(dict.getOrDefault<scalar>("slideTrace", defaultSlideTrace)),
     alphaName_(dict.getOrDefault<word>("alpha", "alpha.slide"))
 {
     setStuck();
